@@ -1,0 +1,84 @@
+/*---------------------------------------------------------------------------*\
+Application
+    pisoDEMFoam
+
+Group
+    foamDEM solvers
+
+Description
+    Transient incompressible solver for unresolved CFD-DEM: the fluid, with
+    void fraction eps, coupled to a DEM (LIGGGHTS) that runs in the same
+    process through the foamDEM library. PISO pressure-velocity coupling.
+
+    Model A (Zhou et al. 2010, J. Fluid Mech. 661:482, set I):
+        d(eps)/dt + div(eps u) = 0
+        d(eps u)/dt + div(eps u u) - div(eps tau)/rho
+            = -eps grad(p) - K_pf/rho (u - U_s) + f_explicit/rho
+    with kinematic pressure p (hydrostatic part excluded; the particles get
+    buoyancy from the 'archimedes' force model) and K_pf, U_s, f_explicit
+    from constant/couplingProperties' models.
+
+    Laminar or turbulent (constant/turbulenceProperties, void-fraction
+    weighted), fvOptions supported.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "singlePhaseTransportModel.H"
+#include "PhaseIncompressibleTurbulenceModel.H"
+#include "pisoControl.H"
+#include "fvOptions.H"
+#include "demCoupling.H"
+
+typedef Foam::PhaseIncompressibleTurbulenceModel
+<
+    Foam::singlePhaseTransportModel
+> phaseTurbulenceModel;
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Incompressible PISO solver with void fraction, coupled in-process"
+        " to the DEM through foamDEM."
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    pisoControl piso(mesh);
+
+    #include "createFields.H"
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        ++runTime;
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        coupling.evolve();
+
+        alphaf = fvc::interpolate(alpha);
+        alphaPhi = alphaf*phi;
+
+        #include "UEqn.H"
+
+        while (piso.correct())
+        {
+            #include "pEqn.H"
+        }
+
+        laminarTransport.correct();
+        turbulence->correct();
+
+        #include "reportFlow.H"
+
+        runTime.write();
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+    return 0;
+}

@@ -1,0 +1,393 @@
+#include "demCoupling.H"
+#include "uniformDimensionedFields.H"
+#include "zeroGradientFvPatchFields.H"
+#include "fvmSup.H"
+#include "fvc.H"
+
+#include <chrono>
+
+const Foam::Enum<Foam::foamDEM::demCoupling::modelTypes>
+Foam::foamDEM::demCoupling::modelTypeNames
+({
+    { modelTypes::A, "A" },
+});
+
+
+namespace
+{
+    //- Adds the wall time of its scope to a timer
+    class scopedTimer
+    {
+        Foam::scalar& total_;
+        std::chrono::steady_clock::time_point start_;
+    public:
+        scopedTimer(Foam::scalar& total)
+        :
+            total_(total),
+            start_(std::chrono::steady_clock::now())
+        {}
+        ~scopedTimer()
+        {
+            total_ += std::chrono::duration<double>
+            (
+                std::chrono::steady_clock::now() - start_
+            ).count();
+        }
+    };
+
+    Foam::scalar readFluidProperty
+    (
+        const Foam::dictionary& dict,
+        const Foam::word& name,
+        const Foam::dimensionSet& dims
+    )
+    {
+        const Foam::scalar value =
+            Foam::dimensionedScalar(name, dims, dict).value();
+        if (value <= 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << name << " must be positive, got " << value
+                << Foam::exit(Foam::FatalIOError);
+        }
+        return value;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Private functions  * * * * * * * * * * * * //
+
+Foam::wordList Foam::foamDEM::demCoupling::alphaPatchTypes(const fvMesh& mesh)
+{
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    wordList types(patches.size(), zeroGradientFvPatchScalarField::typeName);
+    forAll(patches, patchi)
+    {
+        if (polyPatch::constraintType(patches[patchi].type()))
+        {
+            types[patchi] = patches[patchi].type();
+        }
+    }
+    return types;
+}
+
+
+void Foam::foamDEM::demCoupling::checkTimeSteps() const
+{
+    const scalar dtCFD = mesh_.time().deltaTValue();
+    const scalar dtDEM = engine_->timeStep();
+    const scalar dtCoupled = dtDEM*couplingInterval_;
+
+    if (mag(dtCoupled - dtCFD) > 1e-9*dtCFD)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Inconsistent time steps: DEM time step " << dtDEM
+            << " s x couplingInterval " << couplingInterval_ << " = "
+            << dtCoupled << " s, but the CFD deltaT (system/controlDict) is "
+            << dtCFD << " s." << nl
+            << "    Set couplingInterval to " << dtCFD/dtDEM
+            << " (if a whole number), or change deltaT or the DEM timestep."
+            << exit(FatalIOError);
+    }
+    if (mesh_.time().controlDict().getOrDefault("adjustTimeStep", false))
+    {
+        FatalIOErrorInFunction(mesh_.time().controlDict())
+            << "adjustTimeStep yes is not supported: the CFD step must stay"
+            << " couplingInterval DEM steps long." << exit(FatalIOError);
+    }
+}
+
+
+void Foam::foamDEM::demCoupling::checkGravity() const
+{
+    const vector gDEM = engine_->gravity();
+    if (mag(gDEM - g_) > 1e-6*max(mag(g_), scalar(1)))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Gravity differs between the CFD and the DEM: constant/g is "
+            << g_ << " m/s^2, the DEM's fix gravity gives " << gDEM
+            << " m/s^2. Make them equal." << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::foamDEM::demCoupling::demCoupling
+(
+    const volVectorField& U,
+    const volScalarField& p
+)
+:
+    mesh_(U.mesh()),
+    U_(U),
+    p_(p),
+    dict_
+    (
+        IOobject
+        (
+            "couplingProperties",
+            mesh_.time().constant(),
+            mesh_,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    modelType_(modelTypeNames.get("modelType", dict_)),
+    rhoFluid_(0),
+    nuFluid_(0),
+    g_(Zero),
+    couplingInterval_(dict_.get<label>("couplingInterval")),
+    output_(mesh_, dict_.getOrDefault<word>("cloudName", "particles")),
+    alpha_
+    (
+        IOobject
+        (
+            "voidfraction",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh_,
+        dimensionedScalar("one", dimless, 1),
+        alphaPatchTypes(mesh_)
+    ),
+    Ksl_
+    (
+        IOobject("Ksl", mesh_.time().timeName(), mesh_),
+        mesh_,
+        dimensionedScalar("zero", dimDensity/dimTime, Zero)
+    ),
+    Us_
+    (
+        IOobject
+        (
+            "Us",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh_,
+        dimensionedVector("zero", dimVelocity, Zero)
+    ),
+    fExplicit_
+    (
+        IOobject("fExplicit", mesh_.time().timeName(), mesh_),
+        mesh_,
+        dimensionedVector("zero", dimForce/dimVolume, Zero)
+    ),
+    nOutside_(0)
+{
+    Info<< nl << "foamDEM: CFD-DEM coupling, model type "
+        << modelTypeNames[modelType_] << endl;
+
+    if (couplingInterval_ < 1)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "couplingInterval must be a whole number >= 1, got "
+            << couplingInterval_ << exit(FatalIOError);
+    }
+
+    {
+        const IOdictionary transport
+        (
+            IOobject
+            (
+                "transportProperties",
+                mesh_.time().constant(),
+                mesh_,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        );
+        rhoFluid_ = readFluidProperty(transport, "rho", dimDensity);
+        nuFluid_ = readFluidProperty(transport, "nu", dimViscosity);
+
+        const uniformDimensionedVectorField g
+        (
+            IOobject
+            (
+                "g",
+                mesh_.time().constant(),
+                mesh_,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        );
+        g_ = g.value();
+    }
+
+    // Models
+    engine_ = demEngine::New(mesh_.time(), dict_);
+    locate_ = locateModel::New(dict_, mesh_);
+    voidFraction_ = voidFractionModel::New(dict_, mesh_);
+
+    const wordList forceNames(dict_.get<wordList>("forceModels"));
+    forces_.setSize(forceNames.size());
+    forAll(forceNames, i)
+    {
+        forces_.set(i, forceModel::New(forceNames[i], dict_, *this));
+    }
+    momentum_ = momentumCouplingModel::New(dict_);
+
+    // What to exchange: only what the selected models need
+    locate_->addRequirements(plan_);
+    voidFraction_->addRequirements(plan_);
+    for (const forceModel& f : forces_)
+    {
+        f.addRequirements(plan_);
+    }
+    momentum_->addRequirements(plan_);
+    output_.addRequirements(plan_);
+    plan_.print();
+
+    checkTimeSteps();
+    checkGravity();
+
+    Info<< "    DEM time step " << engine_->timeStep() << " s, "
+        << couplingInterval_ << " DEM steps per CFD step, "
+        << engine_->nGlobal() << " particles" << nl << endl;
+
+    // Coupling terms for the first DEM interval
+    update();
+    alpha_.oldTime();
+}
+
+
+Foam::foamDEM::demCoupling::~demCoupling()
+{
+    const timers& t = timers_;
+    const scalar coupling =
+        t.pull + t.locate + t.voidFraction + t.forces + t.push;
+    Info<< nl << "foamDEM timing [s]: DEM " << t.dem
+        << ", coupling " << coupling << " (pull " << t.pull
+        << ", locate " << t.locate << ", void fraction " << t.voidFraction
+        << ", forces " << t.forces << ", push " << t.push
+        << "), particle output " << t.output << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member functions  * * * * * * * * * * * * * //
+
+void Foam::foamDEM::demCoupling::update()
+{
+    {
+        scopedTimer timer(timers_.pull);
+        engine_->pull(plan_, particles_);
+    }
+
+    {
+        scopedTimer timer(timers_.locate);
+        const label nOutside = returnReduce
+        (
+            locate_->locate(particles_),
+            sumOp<label>()
+        );
+        if (nOutside != nOutside_)
+        {
+            WarningInFunction
+                << nOutside << " particle(s) outside the CFD mesh at t = "
+                << mesh_.time().timeName() << " s: they get no fluid force"
+                << " and do not count in the void fraction." << endl;
+        }
+        nOutside_ = nOutside;
+    }
+
+    {
+        scopedTimer timer(timers_.voidFraction);
+        voidFraction_->compute(particles_, alpha_);
+    }
+
+    {
+        scopedTimer timer(timers_.forces);
+        particleData& p = particles_;
+        forAll(p.cell, i)
+        {
+            const label c = p.cell[i];
+            p.fluidVelocity[i] = c >= 0 ? U_[c] : vector::zero;
+        }
+        p.dragCoeff = 0;
+        p.coupledForce = Zero;
+        p.uncoupledForce = Zero;
+        for (const forceModel& f : forces_)
+        {
+            f.addForce(p);
+        }
+
+        const label nCells = mesh_.nCells();
+        scalarField sumK(nCells, Zero);
+        vectorField sumKv(nCells, Zero);
+        vectorField forceOnFluid(nCells, Zero);
+        momentum_->distribute(p, sumK, sumKv, forceOnFluid);
+
+        const scalarField& V = mesh_.V();
+        Ksl_.primitiveFieldRef() = sumK/V;
+        forAll(sumK, c)
+        {
+            Us_[c] = sumK[c] > 0 ? sumKv[c]/sumK[c] : vector::zero;
+        }
+        fExplicit_.primitiveFieldRef() = forceOnFluid/V;
+        Ksl_.correctBoundaryConditions();
+        Us_.correctBoundaryConditions();
+        fExplicit_.correctBoundaryConditions();
+    }
+
+    {
+        scopedTimer timer(timers_.push);
+        engine_->push(plan_, particles_);
+    }
+
+    if (mesh_.time().writeTime())
+    {
+        scopedTimer timer(timers_.output);
+        output_.write(particles_);
+    }
+}
+
+
+void Foam::foamDEM::demCoupling::evolve()
+{
+    {
+        scopedTimer timer(timers_.dem);
+        engine_->advance(couplingInterval_);
+    }
+    update();
+}
+
+
+Foam::tmp<Foam::fvVectorMatrix>
+Foam::foamDEM::demCoupling::momentumSource(volVectorField& U) const
+{
+    const dimensionedScalar rho("rho", dimDensity, rhoFluid_);
+    const volScalarField KByRho(Ksl_/rho);
+    return
+    (
+        fvm::Sp(-KByRho, U)
+      + KByRho*Us_
+      + fExplicit_/rho
+    );
+}
+
+
+Foam::vector Foam::foamDEM::demCoupling::totalParticleForce() const
+{
+    return returnReduce(sum(particles_.fluidForce), sumOp<vector>());
+}
+
+
+Foam::vector Foam::foamDEM::demCoupling::totalFluidSource
+(
+    const volVectorField& U
+) const
+{
+    const scalarField& V = mesh_.V();
+    return gSum
+    (
+        (Ksl_.primitiveField()*(Us_.primitiveField() - U.primitiveField())
+      + fExplicit_.primitiveField())*V
+    );
+}

@@ -1,0 +1,45 @@
+#include "explicitCoupling.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace foamDEM
+{
+    defineTypeNameAndDebug(explicitCoupling, 0);
+    addToRunTimeSelectionTable(momentumCouplingModel, explicitCoupling, dictionary);
+}
+}
+
+
+void Foam::foamDEM::explicitCoupling::addRequirements(exchangePlan& plan) const
+{
+    plan.need(quantity::velocity, typeName);
+    plan.need(quantity::explicitForce, typeName);
+}
+
+
+void Foam::foamDEM::explicitCoupling::distribute
+(
+    particleData& p,
+    scalarField& sumK,
+    vectorField& sumKv,
+    vectorField& forceOnFluid
+) const
+{
+    forAll(p.cell, i)
+    {
+        const label c = p.cell[i];
+        if (c < 0)
+        {
+            p.explicitForce[i] = Zero;
+            p.fluidForce[i] = Zero;
+            continue;
+        }
+        const vector drag =
+            p.dragCoeff[i]*(p.fluidVelocity[i] - p.velocity[i]);
+        p.explicitForce[i] = drag + p.coupledForce[i] + p.uncoupledForce[i];
+        p.fluidForce[i] = p.explicitForce[i];
+
+        forceOnFluid[c] -= drag + p.coupledForce[i];
+    }
+}

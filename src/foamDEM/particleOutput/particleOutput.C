@@ -1,0 +1,53 @@
+#include "particleOutput.H"
+#include "passiveParticleCloud.H"
+#include "IOField.H"
+
+void Foam::foamDEM::particleOutput::addRequirements(exchangePlan& plan) const
+{
+    const word who("particleOutput");
+    plan.need(quantity::position, who);
+    plan.need(quantity::velocity, who);
+    plan.need(quantity::radius, who);
+    plan.need(quantity::id, who);
+}
+
+
+void Foam::foamDEM::particleOutput::write(const particleData& p) const
+{
+    passiveParticleCloud cloud(mesh_, cloudName_, IDLList<passiveParticle>());
+
+    DynamicList<label> written(p.size());
+    forAll(p.cell, i)
+    {
+        if (p.cell[i] >= 0)
+        {
+            cloud.addParticle
+            (
+                new passiveParticle(mesh_, p.position[i], p.cell[i])
+            );
+            written.append(i);
+        }
+    }
+
+    auto makeField = [&](const word& name, auto value)
+    {
+        using Type = decltype(value(label(0)));
+        IOField<Type> f
+        (
+            cloud.fieldIOobject(name, IOobject::NO_READ),
+            written.size()
+        );
+        forAll(written, k)
+        {
+            f[k] = value(written[k]);
+        }
+        f.write(written.size() > 0);
+    };
+
+    makeField("U", [&](label i) { return p.velocity[i]; });
+    makeField("d", [&](label i) { return p.diameter(i); });
+    makeField("origId", [&](label i) { return p.id[i]; });
+    makeField("f", [&](label i) { return p.fluidForce[i]; });
+
+    cloud.write();
+}

@@ -57,6 +57,21 @@ namespace
 
 // * * * * * * * * * * * * * * * Private functions  * * * * * * * * * * * * //
 
+Foam::foamDEM::demCoupling::modelTypes
+Foam::foamDEM::demCoupling::readModelType(const dictionary& dict)
+{
+    const word name(dict.get<word>("modelType"));
+    if (!modelTypeNames.found(name))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown modelType " << name << nl << nl
+            << "Valid modelType types :" << nl << modelTypeNames.sortedToc()
+            << exit(FatalIOError);
+    }
+    return modelTypeNames[name];
+}
+
+
 Foam::wordList Foam::foamDEM::demCoupling::alphaPatchTypes(const fvMesh& mesh)
 {
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
@@ -133,7 +148,7 @@ Foam::foamDEM::demCoupling::demCoupling
             IOobject::NO_WRITE
         )
     ),
-    modelType_(modelTypeNames.get("modelType", dict_)),
+    modelType_(readModelType(dict_)),
     rhoFluid_(0),
     nuFluid_(0),
     g_(Zero),

@@ -170,6 +170,10 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
         run("fix foamDEM_force all couple/cfd/force/implicit",
             "adding the coupling force fix");
     }
+
+    // Set the DEM up now (neighbour lists, fix gravity), so that errors
+    // surface at start-up and gravity() is known
+    run("run 0", "setting up the DEM");
 }
 
 

@@ -1,0 +1,1 @@
+"""foamDEM post-processing helpers (numpy/matplotlib from Debian)."""

@@ -1,0 +1,71 @@
+"""Read the small things a foamDEM validation needs from a case directory."""
+import os
+import re
+
+_NUMBER = r"[-+0-9.eE]+"
+
+
+def _strip_comments(text):
+    text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+    return re.sub(r"//[^\n]*", "", text)
+
+
+def foam_entry(path, key):
+    """The raw value of a top-level 'key value;' entry of an OpenFOAM dict."""
+    text = _strip_comments(open(path).read())
+    m = re.search(r"(?m)^\s*" + re.escape(key) + r"\s+([^;]*);", text)
+    if not m:
+        raise KeyError("%s: no entry '%s'" % (path, key))
+    return m.group(1).strip()
+
+
+def foam_scalar(path, key):
+    """A scalar entry, with or without dimensions: 'nu 1e-6;' or
+    'nu [0 2 -1 0 0 0 0] 1e-6;'."""
+    value = foam_entry(path, key)
+    return float(re.sub(r"\[[^\]]*\]", "", value).split()[-1])
+
+
+def foam_vector(path, key):
+    value = foam_entry(path, key)
+    m = re.search(r"\(\s*(%s)\s+(%s)\s+(%s)\s*\)" % ((_NUMBER,) * 3), value)
+    return tuple(float(x) for x in m.groups())
+
+
+def foam_word_list(path, key):
+    value = foam_entry(path, key)
+    return value.strip("() ").split()
+
+
+def liggghts_variables(path):
+    """'variable NAME equal VALUE' lines of a LIGGGHTS include file."""
+    out = {}
+    for line in open(path):
+        m = re.match(r"\s*variable\s+(\w+)\s+equal\s+(%s)\s*$" % _NUMBER, line)
+        if m:
+            out[m.group(1)] = float(m.group(2))
+    return out
+
+
+def time_dirs(case):
+    """Numeric time directories of a case, sorted."""
+    times = []
+    for name in os.listdir(case):
+        try:
+            times.append((float(name), name))
+        except ValueError:
+            pass
+    return [name for _, name in sorted(times)]
+
+
+def scalar_field_values(path):
+    """Internal values of a volScalarField file (uniform or nonuniform)."""
+    text = open(path).read()
+    m = re.search(r"internalField\s+uniform\s+(%s)\s*;" % _NUMBER, text)
+    if m:
+        return [float(m.group(1))]
+    m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\((.*?)\)\s*;",
+                  text, flags=re.S)
+    if not m:
+        raise ValueError("%s: cannot read internalField" % path)
+    return [float(x) for x in m.group(2).split()]

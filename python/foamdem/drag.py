@@ -15,7 +15,7 @@ def schiller_naumann(d, rho, mu, eps, slip):
 def di_felice(d, rho, mu, eps, slip):
     re = eps * rho * slip * d / mu
     if re <= 0:
-        return 3 * math.pi * mu * d * 4.8 ** 2 / 24 * eps ** (2 - 3.7)
+        return math.pi / 8 * 4.8 ** 2 * mu * d * eps ** (1 - 3.7)
     cd = (0.63 + 4.8 / math.sqrt(re)) ** 2
     chi = 3.7 - 0.65 * math.exp(-(1.5 - math.log10(re)) ** 2 / 2)
     return math.pi / 8 * cd * rho * d * d * slip * eps ** (2 - chi)

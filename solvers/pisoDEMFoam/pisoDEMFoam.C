@@ -10,13 +10,14 @@ Description
     void fraction eps, coupled to a DEM (LIGGGHTS) that runs in the same
     process through the foamDEM library. PISO pressure-velocity coupling.
 
-    Model A (Zhou et al. 2010, J. Fluid Mech. 661:482, set I):
+    Zhou et al. (2010), J. Fluid Mech. 661:482, sets I (model A) and
+    II (model B), with w = eps for model A and w = 1 for model B:
         d(eps)/dt + div(eps u) = 0
         d(eps u)/dt + div(eps u u) - div(eps tau)/rho
-            = -eps grad(p) - K_pf/rho (u - U_s) + f_explicit/rho
+            = -w grad(p) - K_pf/rho (u - U_s) + f_explicit/rho
     with kinematic pressure p (hydrostatic part excluded; the particles get
     buoyancy from the 'archimedes' force model) and K_pf, U_s, f_explicit
-    from constant/couplingProperties' models.
+    from constant/couplingProperties' models. modelType selects A or B.
 
     Laminar or turbulent (constant/turbulenceProperties, void-fraction
     weighted), fvOptions supported.
@@ -62,6 +63,8 @@ int main(int argc, char *argv[])
 
         alphaf = fvc::interpolate(alpha);
         alphaPhi = alphaf*phi;
+        const volScalarField pWeight(coupling.pressureWeight());
+        const surfaceScalarField pWeightf(fvc::interpolate(pWeight));
 
         #include "UEqn.H"
 

@@ -1,6 +1,9 @@
 # settlingSphere tests (FOAMDEM_WORK and TUT come from integration.cmake)
+set(VARIANT ${CMAKE_CURRENT_SOURCE_DIR}/integration/runVariant)
+set(BALANCE ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkMomentumBalance)
+set(CP constant/couplingProperties)
 
-# settlingSphere: terminal velocity within 0.5 % of the ODE, per drag law
+# Terminal velocity within 0.5 % of the ODE, per single-particle drag law
 foreach(law schillerNaumann diFelice)
     add_test(NAME settlingSphere.${law}
         COMMAND ${TUT} settlingSphere ${FOAMDEM_WORK}/settlingSphere_${law}
@@ -10,6 +13,28 @@ foreach(law schillerNaumann diFelice)
         FIXTURES_SETUP settling_${law})
 endforeach()
 
+# The same check with explicit coupling and with model B; each run logs the
+# momentum exchange at every coupling step
+add_test(NAME settlingSphere.explicitCoupling
+    COMMAND ${VARIANT} settlingSphere ${FOAMDEM_WORK}/settlingSphere_explicit
+            "foamDictionary ${CP} -entry momentumCoupling -set explicit" -ci)
+add_test(NAME settlingSphere.modelB
+    COMMAND ${VARIANT} settlingSphere ${FOAMDEM_WORK}/settlingSphere_modelB
+            "foamDictionary ${CP} -entry modelType -set B && sed -i 's/ archimedes pressureGradient)/ archimedes)/' Allrun"
+            -ci -drag schillerNaumann)
+set_tests_properties(settlingSphere.explicitCoupling PROPERTIES
+    LABELS "integration;tutorial" TIMEOUT 300 FIXTURES_SETUP settling_explicit)
+set_tests_properties(settlingSphere.modelB PROPERTIES
+    LABELS "integration;tutorial" TIMEOUT 300 FIXTURES_SETUP settling_modelB)
+
+# Newton's third law to 1e-10, implicit (model B run) and explicit coupling
+foreach(v explicit modelB)
+    add_test(NAME momentumBalance.${v}
+        COMMAND ${BALANCE} ${FOAMDEM_WORK}/settlingSphere_${v}/log.pisoDEMFoam 1e-10)
+    set_tests_properties(momentumBalance.${v} PROPERTIES
+        LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_${v})
+endforeach()
+
 # Particles written as a lagrangian cloud that foamToVTK exports
 add_test(NAME particleOutput.foamToVTK
     COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkParticleVTK
@@ -17,11 +42,20 @@ add_test(NAME particleOutput.foamToVTK
 set_tests_properties(particleOutput.foamToVTK PROPERTIES
     LABELS integration TIMEOUT 120 FIXTURES_REQUIRED settling_schillerNaumann)
 
-# Demand-driven exchange: a drag-only scene pulls no spin or orientation
-add_test(NAME exchangePlan.dragOnly
+# Demand-driven exchange: two scenes, two plans. Implicit drag pulls
+# velocities and pushes K_p and u_f; explicit coupling pushes only a force.
+# Neither pulls spin or density.
+add_test(NAME exchangePlan.implicitDrag
     COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkExchangePlan
             ${FOAMDEM_WORK}/settlingSphere_schillerNaumann/log.pisoDEMFoam
             "position velocity radius id implicitCoeff fluidVelocity explicitForce"
-            "angularVelocity orientation density torque")
-set_tests_properties(exchangePlan.dragOnly PROPERTIES
+            "angularVelocity density")
+set_tests_properties(exchangePlan.implicitDrag PROPERTIES
     LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_schillerNaumann)
+add_test(NAME exchangePlan.explicitDrag
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkExchangePlan
+            ${FOAMDEM_WORK}/settlingSphere_explicit/log.pisoDEMFoam
+            "position velocity radius id explicitForce"
+            "implicitCoeff fluidVelocity angularVelocity density")
+set_tests_properties(exchangePlan.explicitDrag PROPERTIES
+    LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_explicit)

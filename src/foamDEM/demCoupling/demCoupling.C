@@ -10,6 +10,7 @@ const Foam::Enum<Foam::foamDEM::demCoupling::modelTypes>
 Foam::foamDEM::demCoupling::modelTypeNames
 ({
     { modelTypes::A, "A" },
+    { modelTypes::B, "B" },
 });
 
 
@@ -126,6 +127,108 @@ void Foam::foamDEM::demCoupling::checkGravity() const
 }
 
 
+void Foam::foamDEM::demCoupling::checkForceModels() const
+{
+    using kinds = forceModel::forceKind;
+    wordList drags;
+    bool hasPressureGradient = false, hasBuoyancy = false;
+    wordList refusedInB;
+    for (const forceModel& f : forces_)
+    {
+        switch (f.kind())
+        {
+            case kinds::drag: drags.append(f.type()); break;
+            case kinds::pressureGradient:
+                hasPressureGradient = true;
+                refusedInB.append(f.type());
+                break;
+            case kinds::viscous: refusedInB.append(f.type()); break;
+            case kinds::buoyancy: hasBuoyancy = true; break;
+            default: break;
+        }
+    }
+
+    if (drags.size() > 1)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "forceModels lists more than one drag law: " << drags << nl
+            << "    Keep one of them." << exit(FatalIOError);
+    }
+    if (modelType_ == modelTypes::A && !hasPressureGradient)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "modelType A: the fluid sees -eps grad(p), so the particles"
+            << " need the pressure-gradient force." << nl
+            << "    Add pressureGradient to forceModels, or use modelType B."
+            << exit(FatalIOError);
+    }
+    if (modelType_ == modelTypes::B && refusedInB.size())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "modelType B: the drag (divided by eps) already carries the"
+            << " pressure-gradient and viscous forces, but forceModels also"
+            << " lists " << refusedInB << '.' << nl
+            << "    Remove them from forceModels, or use modelType A."
+            << exit(FatalIOError);
+    }
+    if (drags.empty())
+    {
+        WarningInFunction
+            << "No drag law in forceModels " << dict_.get<wordList>("forceModels")
+            << ": the particles feel no drag." << endl;
+    }
+    if (!hasBuoyancy)
+    {
+        WarningInFunction
+            << "No buoyancy force (archimedes) in forceModels: the pressure"
+            << " excludes the hydrostatic part, so the particles feel no"
+            << " buoyancy. Fine for gas-solid flows where rho_f << rho_p."
+            << endl;
+    }
+}
+
+
+void Foam::foamDEM::demCoupling::reportMomentumBalance() const
+{
+    // What the particles get through the coupled terms ...
+    const particleData& p = particles_;
+    vector onParticles(Zero);
+    forAll(p.cell, i)
+    {
+        if (p.cell[i] >= 0)
+        {
+            onParticles += p.dragCoeff[i]*(p.fluidVelocity[i] - p.velocity[i])
+                + p.coupledForce[i];
+        }
+    }
+    reduce(onParticles, sumOp<vector>());
+
+    // ... and what the fluid gets, at the same instant
+    const vector onFluid = totalFluidSource(U_);
+    const scalar scale = max(mag(onParticles), max(mag(onFluid), VSMALL));
+
+    Info<< "foamDEM momentum balance: on particles " << onParticles
+        << " N, on fluid " << onFluid << " N, relative mismatch "
+        << mag(onParticles + onFluid)/scale << endl;
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::foamDEM::demCoupling::pressureWeight() const
+{
+    if (modelType_ == modelTypes::A)
+    {
+        return tmp<volScalarField>::New("pressureWeight", alpha_);
+    }
+    return tmp<volScalarField>::New
+    (
+        IOobject("pressureWeight", mesh_.time().timeName(), mesh_),
+        mesh_,
+        dimensionedScalar("one", dimless, 1)
+    );
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::foamDEM::demCoupling::demCoupling
@@ -193,7 +296,8 @@ Foam::foamDEM::demCoupling::demCoupling
         mesh_,
         dimensionedVector("zero", dimForce/dimVolume, Zero)
     ),
-    nOutside_(0)
+    nOutside_(0),
+    checkMomentumBalance_(dict_.getOrDefault("checkMomentumBalance", false))
 {
     Info<< nl << "foamDEM: CFD-DEM coupling, model type "
         << modelTypeNames[modelType_] << endl;
@@ -248,6 +352,7 @@ Foam::foamDEM::demCoupling::demCoupling
         forces_.set(i, forceModel::New(forceNames[i], dict_, *this));
     }
     momentum_ = momentumCouplingModel::New(dict_);
+    checkForceModels();
 
     // What to exchange: only what the selected models need
     locate_->addRequirements(plan_);
@@ -302,10 +407,10 @@ void Foam::foamDEM::demCoupling::update()
             locate_->locate(particles_),
             sumOp<label>()
         );
-        if (nOutside != nOutside_)
+        if (nOutside > 0 && nOutside != nOutside_)
         {
             WarningInFunction
-                << nOutside << " particle(s) outside the CFD mesh at t = "
+                << nOutside << " particle(s) not found in the CFD mesh at t = "
                 << mesh_.time().timeName() << " s: they get no fluid force"
                 << " and do not count in the void fraction." << endl;
         }
@@ -354,6 +459,11 @@ void Foam::foamDEM::demCoupling::update()
     {
         scopedTimer timer(timers_.push);
         engine_->push(plan_, particles_);
+    }
+
+    if (checkMomentumBalance_)
+    {
+        reportMomentumBalance();
     }
 
     if (mesh_.time().writeTime())

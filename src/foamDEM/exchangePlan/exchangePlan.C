@@ -7,12 +7,10 @@ const Foam::Enum<Foam::foamDEM::quantity> Foam::foamDEM::exchangePlan::names
     { quantity::radius, "radius" },
     { quantity::density, "density" },
     { quantity::angularVelocity, "angularVelocity" },
-    { quantity::orientation, "orientation" },
     { quantity::id, "id" },
     { quantity::implicitCoeff, "implicitCoeff" },
     { quantity::fluidVelocity, "fluidVelocity" },
     { quantity::explicitForce, "explicitForce" },
-    { quantity::torque, "torque" },
 });
 
 

@@ -4,7 +4,7 @@ set(BALANCE ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkMomentumBalance)
 set(CP constant/couplingProperties)
 
 # Terminal velocity within 0.5 % of the ODE, per single-particle drag law
-foreach(law schillerNaumann diFelice)
+foreach(law schillerNaumann diFelice kochHill gidaspow beetstra tenneti rong)
     add_test(NAME settlingSphere.${law}
         COMMAND ${TUT} settlingSphere ${FOAMDEM_WORK}/settlingSphere_${law}
                 -ci -drag ${law})

@@ -59,3 +59,12 @@ add_test(NAME exchangePlan.explicitDrag
             "implicitCoeff fluidVelocity angularVelocity density")
 set_tests_properties(exchangePlan.explicitDrag PROPERTIES
     LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_explicit)
+
+# Parallel: the sphere's cell is on CFD rank 0 while LIGGGHTS holds it on
+# rank 1, so it moves between ranks every step; np = 1 and np = 2 agree
+add_test(NAME parallel.settlingSphere.np2
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/compareParallel
+            ${FOAMDEM_WORK}/parallel_settling 2 1e-8
+            "sed -i 's/^variable x0     equal 0.02$/variable x0     equal 0.012/' DEM/parameters")
+set_tests_properties(parallel.settlingSphere.np2 PROPERTIES
+    LABELS "integration;parallel" TIMEOUT 300 PROCESSORS 2)

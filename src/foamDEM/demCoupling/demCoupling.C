@@ -297,7 +297,8 @@ Foam::foamDEM::demCoupling::demCoupling
         dimensionedVector("zero", dimForce/dimVolume, Zero)
     ),
     nOutside_(0),
-    checkMomentumBalance_(dict_.getOrDefault("checkMomentumBalance", false))
+    checkMomentumBalance_(dict_.getOrDefault("checkMomentumBalance", false)),
+    logExchange_(dict_.getOrDefault("logExchange", false))
 {
     Info<< nl << "foamDEM: CFD-DEM coupling, model type "
         << modelTypeNames[modelType_] << endl;
@@ -353,6 +354,10 @@ Foam::foamDEM::demCoupling::demCoupling
     }
     momentum_ = momentumCouplingModel::New(dict_);
     checkForceModels();
+    if (Pstream::parRun())
+    {
+        transfer_.reset(new particleTransfer(mesh_));
+    }
 
     // What to exchange: only what the selected models need
     locate_->addRequirements(plan_);
@@ -382,10 +387,11 @@ Foam::foamDEM::demCoupling::~demCoupling()
 {
     const timers& t = timers_;
     const scalar coupling =
-        t.pull + t.locate + t.voidFraction + t.forces + t.push;
+        t.pull + t.locate + t.transfer + t.voidFraction + t.forces + t.push;
     Info<< nl << "foamDEM timing [s]: DEM " << t.dem
         << ", coupling " << coupling << " (pull " << t.pull
-        << ", locate " << t.locate << ", void fraction " << t.voidFraction
+        << ", locate " << t.locate << ", transfer " << t.transfer
+        << ", void fraction " << t.voidFraction
         << ", forces " << t.forces << ", push " << t.push
         << "), particle output " << t.output << endl;
 }
@@ -400,13 +406,19 @@ void Foam::foamDEM::demCoupling::update()
         engine_->pull(plan_, particles_);
     }
 
+    label nOutside = 0;
     {
         scopedTimer timer(timers_.locate);
-        const label nOutside = returnReduce
-        (
-            locate_->locate(particles_),
-            sumOp<label>()
-        );
+        locate_->beginStep();
+        nOutside = locate_->locate(particles_);
+    }
+    if (transfer_)
+    {
+        // Particles whose cell is on another rank go there
+        scopedTimer timer(timers_.transfer);
+        nOutside = transfer_->gather(particles_, locate_(), plan_);
+    }
+    {
         if (nOutside > 0 && nOutside != nOutside_)
         {
             WarningInFunction
@@ -456,20 +468,32 @@ void Foam::foamDEM::demCoupling::update()
         fExplicit_.correctBoundaryConditions();
     }
 
-    {
-        scopedTimer timer(timers_.push);
-        engine_->push(plan_, particles_);
-    }
-
+    // Particles held here, including those moved from other ranks
     if (checkMomentumBalance_)
     {
         reportMomentumBalance();
     }
-
     if (mesh_.time().writeTime())
     {
         scopedTimer timer(timers_.output);
         output_.write(particles_);
+    }
+
+    if (transfer_)
+    {
+        scopedTimer timer(timers_.transfer);
+        transfer_->scatterBack(particles_, plan_);
+        if (logExchange_)
+        {
+            Pout<< "foamDEM exchange: DEM particles " << particles_.size()
+                << ", sent " << transfer_->nSent()
+                << ", received " << transfer_->nReceived()
+                << ", bytes sent " << transfer_->bytesSent() << endl;
+        }
+    }
+    {
+        scopedTimer timer(timers_.push);
+        engine_->push(plan_, particles_);
     }
 }
 

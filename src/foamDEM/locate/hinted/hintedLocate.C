@@ -31,6 +31,24 @@ bool Foam::foamDEM::hintedLocate::inCell(const point& p, label celli) const
 }
 
 
+Foam::label Foam::foamDEM::hintedLocate::hint(label id) const
+{
+    auto iter = current_.cfind(id);
+    if (iter.found())
+    {
+        return *iter;
+    }
+    return previous_.lookup(id, -1);
+}
+
+
+void Foam::foamDEM::hintedLocate::beginStep()
+{
+    previous_.transfer(current_);
+    current_.clear();
+}
+
+
 void Foam::foamDEM::hintedLocate::addRequirements(exchangePlan& plan) const
 {
     plan.need(quantity::position, typeName);
@@ -41,13 +59,12 @@ void Foam::foamDEM::hintedLocate::addRequirements(exchangePlan& plan) const
 Foam::label Foam::foamDEM::hintedLocate::locate(particleData& p)
 {
     const labelListList& cellCells = mesh_.cellCells();
-    Map<label> newHints(2*p.size());
     label nOutside = 0;
 
     forAll(p.cell, i)
     {
         const point& x = p.position[i];
-        const label hint = hints_.lookup(p.id[i], -1);
+        const label hint = this->hint(p.id[i]);
         label celli = -1;
 
         if (hint >= 0 && inCell(x, hint))
@@ -74,17 +91,22 @@ Foam::label Foam::foamDEM::hintedLocate::locate(particleData& p)
         }
 
         p.cell[i] = celli;
+        if (debug > 1)
+        {
+            Pout<< "hintedLocate: particle " << p.id[i] << " at " << x
+                << " hint " << hint << " -> cell " << celli
+                << (celli >= 0 ? " centre " : "")
+                << (celli >= 0 ? mesh_.cellCentres()[celli] : point::zero) << endl;
+        }
         if (celli >= 0)
         {
-            newHints.set(p.id[i], celli);
+            current_.set(p.id[i], celli);
         }
         else
         {
             ++nOutside;
         }
     }
-
-    hints_.transfer(newHints);
 
     if (debug)
     {

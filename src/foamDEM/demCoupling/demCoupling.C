@@ -3,6 +3,7 @@
 #include "zeroGradientFvPatchFields.H"
 #include "fvmSup.H"
 #include "fvc.H"
+#include "stabilityGuard.H"
 
 #include <chrono>
 
@@ -380,6 +381,8 @@ Foam::foamDEM::demCoupling::demCoupling
     // Coupling terms for the first DEM interval
     update();
     alpha_.oldTime();
+
+    stabilityGuard(*this, dict_.subOrEmptyDict("stabilityGuard")).check();
 }
 
 

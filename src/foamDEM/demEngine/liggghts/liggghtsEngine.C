@@ -19,6 +19,7 @@
 #include "modify.h"
 #include "fix.h"
 #include "fix_gravity.h"
+#include "fix_property_global.h"
 
 namespace Foam
 {
@@ -89,9 +90,23 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
     demEngine(runTime),
     lmp_(nullptr),
     ownsMPI_(false),
-    firstRun_(true)
+    firstRun_(true),
+    implicitDrag_(true)
 {
     const dictionary& dict = couplingDict.optionalSubDict(typeName + "Coeffs");
+
+    const word dragIntegration
+    (
+        dict.getOrDefault<word>("dragIntegration", "implicit")
+    );
+    if (dragIntegration != "implicit" && dragIntegration != "explicit")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown dragIntegration " << dragIntegration << nl << nl
+            << "Valid dragIntegration types :" << nl
+            << "2(explicit implicit)" << exit(FatalIOError);
+    }
+    implicitDrag_ = (dragIntegration == "implicit");
 
     // Paths are relative to the (undecomposed) case directory
     const fileName caseDir(runTime.globalPath());
@@ -137,6 +152,14 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
     int nArgs = sizeof(args)/sizeof(args[0]);
     lmp_ = new LAMMPS_NS::LAMMPS(nArgs, const_cast<char**>(args), comm);
 
+    // Only rank 0 has LIGGGHTS screen output. Some LIGGGHTS code prints to
+    // it unguarded, and errors met on one rank only go there: the other
+    // ranks print to stderr.
+    if (!lmp_->screen)
+    {
+        lmp_->screen = stderr;
+    }
+
     Info<< "    LIGGGHTS: reading " << scriptFile_.relative(caseDir)
         << ", output in " << logFile_.relative(caseDir) << endl;
     {
@@ -167,8 +190,13 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
     }
     if (!lmp_->modify->find_fix_style("couple/cfd/force", 0))
     {
-        run("fix foamDEM_force all couple/cfd/force/implicit",
-            "adding the coupling force fix");
+        run
+        (
+            implicitDrag_
+          ? "fix foamDEM_force all couple/cfd/force/implicit CrankNicolson 1.0"
+          : "fix foamDEM_force all couple/cfd/force/implicit",
+            "adding the coupling force fix"
+        );
     }
 
     // Set the DEM up now (neighbour lists, fix gravity), so that errors
@@ -396,6 +424,49 @@ void Foam::foamDEM::liggghtsEngine::push
             }
         }
     }
+}
+
+
+void Foam::foamDEM::liggghtsEngine::materialProperties
+(
+    scalarList& E,
+    scalarList& nu
+) const
+{
+    const label nTypes = lmp_->atom->ntypes;
+    auto perType = [&](const char* name, scalarList& values)
+    {
+        values.clear();
+        auto* fix = dynamic_cast<LAMMPS_NS::FixPropertyGlobal*>
+        (
+            lmp_->modify->find_fix_property
+            (
+                name, "property/global", "peratomtype", 0, 0, "foamDEM", false
+            )
+        );
+        if (fix)
+        {
+            values.setSize(nTypes);
+            forAll(values, t)
+            {
+                values[t] = fix->compute_vector(t);
+            }
+        }
+    };
+    perType("youngsModulus", E);
+    perType("poissonsRatio", nu);
+}
+
+
+Foam::labelList Foam::foamDEM::liggghtsEngine::particleTypes() const
+{
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    labelList types(atom.nlocal);
+    forAll(types, i)
+    {
+        types[i] = atom.type[i] - 1;
+    }
+    return types;
 }
 
 

@@ -76,6 +76,9 @@ int main(int argc, char *argv[])
         laminarTransport.correct();
         turbulence->correct();
 
+        // Stop on NaN/Inf, writing the last good step
+        coupling.checkFluidFinite(U, p);
+
         #include "reportFlow.H"
 
         runTime.write();

@@ -68,3 +68,10 @@ add_test(NAME parallel.settlingSphere.np2
             "sed -i 's/^variable x0     equal 0.02$/variable x0     equal 0.012/' DEM/parameters")
 set_tests_properties(parallel.settlingSphere.np2 PROPERTIES
     LABELS "integration;parallel" TIMEOUT 300 PROCESSORS 2)
+
+# Work-precision report: two cost levels, a table row and a plot each
+add_test(NAME workPrecision.settlingSphere
+    COMMAND ${CMAKE_COMMAND} -E env
+            bash -c "${FOAMDEM_ROOT}/bin/foamDEMWorkPrecision ${FOAMDEM_ROOT}/tutorials/settlingSphere -o ${FOAMDEM_WORK}/workPrecision --levels dt2e-3,dt1e-3 && test $(grep -c '^dt' ${FOAMDEM_WORK}/workPrecision/workPrecision.dat) -eq 2 && test -s ${FOAMDEM_WORK}/workPrecision/workPrecision.png")
+set_tests_properties(workPrecision.settlingSphere PROPERTIES
+    LABELS "integration;workPrecision" TIMEOUT 300)

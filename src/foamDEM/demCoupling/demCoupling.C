@@ -214,6 +214,126 @@ void Foam::foamDEM::demCoupling::reportMomentumBalance() const
 }
 
 
+void Foam::foamDEM::demCoupling::checkParticlesFinite()
+{
+    const particleData& p = particles_;
+    auto bad = [](const auto& x) { return !std::isfinite(mag(x)); };
+
+    string found;
+    forAll(p.cell, i)
+    {
+        const char* what = nullptr;
+        if (bad(p.position[i])) what = "position";
+        else if (p.velocity.size() && bad(p.velocity[i])) what = "velocity";
+        else if (p.radius.size() && bad(p.radius[i])) what = "radius";
+        else if (p.cell[i] < 0) continue;
+        else if (bad(p.fluidVelocity[i])) what = "fluid velocity at the particle";
+        else if (bad(p.voidFraction[i])) what = "void fraction at the particle";
+        else if (bad(p.dragCoeff[i])) what = "drag coefficient K_p";
+        else if (bad(p.coupledForce[i]) || bad(p.uncoupledForce[i]))
+        {
+            what = "explicit fluid force";
+        }
+        if (what)
+        {
+            found = string("particle id ")
+              + Foam::name(p.id.size() ? p.id[i] : i) + " in cell "
+              + Foam::name(p.cell[i]) + " of rank "
+              + Foam::name(Pstream::myProcNo()) + ": " + what + " is not finite";
+            break;
+        }
+    }
+
+    // The first rank with a bad particle reports it; all ranks stop
+    label reporter = found.empty() ? labelMax : Pstream::myProcNo();
+    reduce(reporter, minOp<label>());
+    if (reporter == labelMax) return;
+
+    if (Pstream::parRun())
+    {
+        // scatter sends the master's string; fetch the reporter's instead
+        List<string> all(Pstream::nProcs());
+        all[Pstream::myProcNo()] = found;
+        Pstream::gatherList(all);
+        Pstream::scatterList(all);
+        found = all[reporter];
+    }
+    stopWithLastGoodState
+    (
+        "NaN/Inf at t = " + mesh_.time().timeName() + " s: " + found + '.'
+    );
+}
+
+
+void Foam::foamDEM::demCoupling::checkFluidFinite
+(
+    volVectorField& U,
+    volScalarField& p
+)
+{
+    label badCell = -1;
+    word what;
+    forAll(U, celli)
+    {
+        if (!std::isfinite(mag(U[celli]))) { badCell = celli; what = "U"; break; }
+        if (!std::isfinite(p[celli])) { badCell = celli; what = "p"; break; }
+    }
+    if (!returnReduce(badCell >= 0, orOp<bool>())) return;
+
+    List<string> all(Pstream::nProcs());
+    if (badCell >= 0)
+    {
+        all[Pstream::myProcNo()] =
+            what + " in cell " + Foam::name(badCell) + " (centre "
+          + Foam::name(mesh_.C()[badCell].x()) + ' '
+          + Foam::name(mesh_.C()[badCell].y()) + ' '
+          + Foam::name(mesh_.C()[badCell].z()) + ") of rank "
+          + Foam::name(Pstream::myProcNo());
+    }
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+    string where;
+    for (const string& s : all)
+    {
+        if (s.size()) { where = s; break; }
+    }
+
+    // Back to the last good step
+    U == U.oldTime();
+    p == p.oldTime();
+    stopWithLastGoodState
+    (
+        "NaN/Inf in the fluid solution at t = " + mesh_.time().timeName()
+      + " s: " + where + '.'
+    );
+}
+
+
+void Foam::foamDEM::demCoupling::stopWithLastGoodState(const string& message)
+{
+    Time& runTime = const_cast<Time&>(mesh_.time());
+    const scalar tFailed = runTime.value();
+    const fileName restart
+    (
+        runTime.globalPath()/"DEM/post/restart.atFailure_" + runTime.timeName()
+    );
+    engine_->writeRestart(restart);
+
+    // The fluid fields hold the last completed step: write them under its
+    // time
+    runTime.setTime(tFailed - runTime.deltaTValue(), runTime.timeIndex() - 1);
+    runTime.writeNow();
+
+    FatalErrorInFunction
+        << message.c_str() << nl
+        << "    The fluid fields of the last good step were written to time "
+        << runTime.timeName() << "; the DEM state at the failure to "
+        << restart << '.' << nl
+        << "    Check the stability guard's report at start-up, and consider"
+        << " a smaller time step or implicit coupling." << exit(FatalError);
+}
+
+
 Foam::tmp<Foam::volScalarField>
 Foam::foamDEM::demCoupling::pressureWeight() const
 {
@@ -472,6 +592,7 @@ void Foam::foamDEM::demCoupling::update()
     }
 
     // Particles held here, including those moved from other ranks
+    checkParticlesFinite();
     if (checkMomentumBalance_)
     {
         reportMomentumBalance();

@@ -7,6 +7,8 @@ const Foam::Enum<Foam::foamDEM::quantity> Foam::foamDEM::exchangePlan::names
     { quantity::radius, "radius" },
     { quantity::density, "density" },
     { quantity::angularVelocity, "angularVelocity" },
+    { quantity::orientation, "orientation" },
+    { quantity::type, "type" },
     { quantity::id, "id" },
     { quantity::implicitCoeff, "implicitCoeff" },
     { quantity::fluidVelocity, "fluidVelocity" },

@@ -258,7 +258,13 @@ void Foam::foamDEM::stabilityGuard::check()
 
     checkRanges(dMin, dMax, rhoMin, rhoMax, E, nu);
 
-    if (dMax > 0 && refusals_.empty())
+    if (dMax > 0 && refusals_.empty() && !engine.movesParticles())
+    {
+        note("the DEM integrates no particles (frozen bed): contact and"
+            " relaxation-time checks skipped");
+        checkCellSize(dMax);
+    }
+    else if (dMax > 0 && refusals_.empty())
     {
         // Rayleigh time and Hertz contact time, smallest over particles
         const scalar vImpact = dict_.getOrDefault<scalar>("impactVelocity", 1);

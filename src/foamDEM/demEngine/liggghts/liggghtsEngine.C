@@ -20,6 +20,10 @@
 #include "fix.h"
 #include "fix_gravity.h"
 #include "fix_property_global.h"
+#include "fix_multisphere.h"
+#include "multisphere.h"
+#include "custom_value_tracker.h"
+#include "scalar_container.h"
 
 namespace Foam
 {
@@ -91,7 +95,9 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
     lmp_(nullptr),
     ownsMPI_(false),
     firstRun_(true),
-    implicitDrag_(true)
+    implicitDrag_(true),
+    multisphere_(nullptr),
+    integrates_(false)
 {
     const dictionary& dict = couplingDict.optionalSubDict(typeName + "Coeffs");
 
@@ -183,6 +189,55 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
             << exit(FatalIOError);
     }
 
+    multisphere_ = dynamic_cast<LAMMPS_NS::FixMultisphere*>
+    (
+        lmp_->modify->find_fix_style("multisphere", 0)
+    );
+    if (multisphere_)
+    {
+        if (Pstream::parRun())
+        {
+            FatalIOErrorInFunction(dict)
+                << "The DEM script uses fix multisphere: coupled multisphere"
+                << " bodies run serially for now. Run without -parallel."
+                << exit(FatalIOError);
+        }
+        if (implicitDrag_ && dict.found("dragIntegration"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "dragIntegration implicit is not available with multisphere"
+                << " bodies (LIGGGHTS moves their spheres with the body, so the"
+                << " implicit velocity update is lost). Use explicit."
+                << exit(FatalIOError);
+        }
+        implicitDrag_ = false;
+        Info<< "    LIGGGHTS: multisphere bodies coupled as single particles,"
+            << " explicit DEM drag integration" << endl;
+    }
+
+    for (int i = 0; i < lmp_->modify->nfix; ++i)
+    {
+        const std::string style(lmp_->modify->fix[i]->style);
+        if (style.find("nve") == 0 || style.find("multisphere") == 0)
+        {
+            integrates_ = true;
+        }
+    }
+    if (!integrates_)
+    {
+        if (implicitDrag_ && dict.found("dragIntegration"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "dragIntegration implicit with a DEM that integrates no"
+                << " particles (no nve or multisphere fix): the implicit"
+                << " update would set velocities of frozen particles."
+                << " Use explicit." << exit(FatalIOError);
+        }
+        implicitDrag_ = false;
+        Info<< "    LIGGGHTS: no integration fix, particles stay fixed"
+            << " (explicit DEM drag integration)" << endl;
+    }
+
     if (!lmp_->modify->find_fix_style("couple/cfd", 0))
     {
         run("fix foamDEM_couple all couple/cfd couple_every 0 mpi",
@@ -258,15 +313,44 @@ Foam::scalar Foam::foamDEM::liggghtsEngine::timeStep() const
 }
 
 
+Foam::label Foam::foamDEM::liggghtsEngine::nBodies() const
+{
+    return multisphere_ ? multisphere_->n_body() : 0;
+}
+
+
+Foam::labelList Foam::foamDEM::liggghtsEngine::freeAtoms() const
+{
+    const label n = lmp_->atom->nlocal;
+    if (!multisphere_)
+    {
+        return identity(n);
+    }
+    DynamicList<label> atoms(n);
+    for (label i = 0; i < n; ++i)
+    {
+        if (multisphere_->belongs_to(i) < 0)
+        {
+            atoms.append(i);
+        }
+    }
+    return labelList(std::move(atoms));
+}
+
+
 Foam::label Foam::foamDEM::liggghtsEngine::nLocal() const
 {
-    return lmp_->atom->nlocal;
+    return nBodies() + freeAtoms().size();
 }
 
 
 Foam::label Foam::foamDEM::liggghtsEngine::nGlobal() const
 {
-    return label(lmp_->atom->natoms);
+    if (!multisphere_)
+    {
+        return label(lmp_->atom->natoms);
+    }
+    return returnReduce(nLocal(), sumOp<label>());
 }
 
 
@@ -315,60 +399,104 @@ void Foam::foamDEM::liggghtsEngine::pull
 ) const
 {
     const LAMMPS_NS::Atom& atom = *lmp_->atom;
-    const label n = atom.nlocal;
-    p.resize(n, plan);
+    const label nB = nBodies();
+    const labelList atoms(freeAtoms());
+    p.resize(nB + atoms.size(), plan);
 
-    if (plan.has(quantity::position))
+    auto vec = [](const double* a) { return vector(a[0], a[1], a[2]); };
+    const scalar pi = constant::mathematical::pi;
+
+    // Multisphere bodies
+    if (nB)
     {
-        for (label i = 0; i < n; ++i)
+        LAMMPS_NS::Multisphere& ms = multisphere_->data();
+        double** exSpace = ms.extract_double_vector("ex_space");
+        double** eySpace = ms.extract_double_vector("ey_space");
+        double** ezSpace = ms.extract_double_vector("ez_space");
+        double** inertia = ms.extract_double_vector("inertia");
+        LAMMPS_NS::ScalarContainer<int>* clumpTypes =
+            ms.prop().getElementProperty<LAMMPS_NS::ScalarContainer<int>>
+            ("clumptype");
+
+        double a[4];
+        for (label b = 0; b < nB; ++b)
         {
-            p.position[i] = vector(atom.x[i][0], atom.x[i][1], atom.x[i][2]);
+            ms.xcm(a, b);
+            p.position[b] = vec(a);
+            if (plan.has(quantity::velocity))
+            {
+                ms.vcm(a, b);
+                p.velocity[b] = vec(a);
+            }
+            if (plan.has(quantity::angularVelocity))
+            {
+                ms.omega(a, b);
+                p.angularVelocity[b] = vec(a);
+            }
+            if (plan.has(quantity::radius))
+            {
+                p.radius[b] = cbrt(3*ms.volume(b)/(4*pi));
+            }
+            if (plan.has(quantity::density))
+            {
+                p.density[b] = ms.density(b);
+            }
+            if (plan.has(quantity::orientation))
+            {
+                // Principal axes ordered by increasing moment of inertia
+                const vector axes[3] =
+                    {vec(exSpace[b]), vec(eySpace[b]), vec(ezSpace[b])};
+                label order[3] = {0, 1, 2};
+                std::sort(order, order + 3, [&](label i, label j)
+                    { return inertia[b][i] < inertia[b][j]; });
+                const vector& e0 = axes[order[0]];
+                const vector& e1 = axes[order[1]];
+                const vector e2 = e0 ^ e1;     // right-handed
+                p.orientation[b] = tensor
+                (
+                    e0.x(), e1.x(), e2.x(),
+                    e0.y(), e1.y(), e2.y(),
+                    e0.z(), e1.z(), e2.z()
+                );
+            }
+            if (plan.has(quantity::type))
+            {
+                p.type[b] = (*clumpTypes)(b);
+            }
+            if (plan.has(quantity::id))
+            {
+                p.id[b] = -ms.tag(b);   // bodies: negative ids
+            }
         }
     }
-    if (plan.has(quantity::velocity))
+
+    // Free spheres
+    forAll(atoms, k)
     {
-        for (label i = 0; i < n; ++i)
-        {
-            p.velocity[i] = vector(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
-        }
-    }
-    if (plan.has(quantity::radius))
-    {
-        for (label i = 0; i < n; ++i)
-        {
-            p.radius[i] = atom.radius[i];
-        }
-    }
-    if (plan.has(quantity::density))
-    {
-        for (label i = 0; i < n; ++i)
+        const label i = atoms[k];
+        const label j = nB + k;
+        p.position[j] = vec(atom.x[i]);
+        if (plan.has(quantity::velocity)) p.velocity[j] = vec(atom.v[i]);
+        if (plan.has(quantity::radius)) p.radius[j] = atom.radius[i];
+        if (plan.has(quantity::density))
         {
             const scalar r = atom.radius[i];
-            p.density[i] =
-                atom.rmass[i]/(4.0/3.0*constant::mathematical::pi*r*r*r);
+            p.density[j] = atom.rmass[i]/(4.0/3.0*pi*r*r*r);
         }
-    }
-    if (plan.has(quantity::angularVelocity))
-    {
-        if (!atom.omega_flag)
+        if (plan.has(quantity::angularVelocity))
         {
-            FatalErrorInFunction
-                << "A selected model needs particle angular velocities but"
-                << " the DEM atom style has none (use atom_style granular)."
-                << exit(FatalError);
+            if (!atom.omega_flag)
+            {
+                FatalErrorInFunction
+                    << "A selected model needs particle angular velocities"
+                    << " but the DEM atom style has none (use atom_style"
+                    << " granular)." << exit(FatalError);
+            }
+            p.angularVelocity[j] = vec(atom.omega[i]);
         }
-        for (label i = 0; i < n; ++i)
-        {
-            p.angularVelocity[i] =
-                vector(atom.omega[i][0], atom.omega[i][1], atom.omega[i][2]);
-        }
-    }
-    if (plan.has(quantity::id))
-    {
-        for (label i = 0; i < n; ++i)
-        {
-            p.id[i] = atom.tag[i];
-        }
+        if (plan.has(quantity::orientation)) p.orientation[j] = tensor::I;
+        if (plan.has(quantity::type)) p.type[j] = 0;
+        if (plan.has(quantity::id)) p.id[j] = atom.tag[i];
     }
 }
 
@@ -379,18 +507,23 @@ void Foam::foamDEM::liggghtsEngine::push
     const particleData& p
 )
 {
-    const label n = lmp_->atom->nlocal;
-    if (p.size() != n)
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    const label nB = nBodies();
+    const labelList atoms(freeAtoms());
+    if (p.size() != nB + atoms.size())
     {
         FatalErrorInFunction
             << "Particle count changed between pull and push: "
-            << p.size() << " != " << n << abort(FatalError);
+            << p.size() << " != " << nB + atoms.size() << abort(FatalError);
     }
 
+    double* Ksl = nullptr;
+    double** uf = nullptr;
+    double** fExpl = nullptr;
     if (plan.has(quantity::implicitCoeff))
     {
-        double* Ksl = scalarProperty("Ksl");
-        double** uf = vectorProperty("uf");
+        Ksl = scalarProperty("Ksl");
+        uf = vectorProperty("uf");
         if (!Ksl || !uf)
         {
             FatalErrorInFunction
@@ -398,31 +531,51 @@ void Foam::foamDEM::liggghtsEngine::push
                 << " in the DEM, but the script defines another force fix."
                 << exit(FatalError);
         }
-        for (label i = 0; i < n; ++i)
-        {
-            Ksl[i] = p.implicitCoeff[i];
-            for (direction d = 0; d < 3; ++d)
-            {
-                uf[i][d] = p.fluidVelocity[i][d];
-            }
-        }
     }
     if (plan.has(quantity::explicitForce))
     {
-        double** fExpl = vectorProperty("dragforce");
+        fExpl = vectorProperty("dragforce");
         if (!fExpl)
         {
             FatalErrorInFunction
                 << "The DEM has no coupling force fix (couple/cfd/force)."
                 << exit(FatalError);
         }
-        for (label i = 0; i < n; ++i)
+    }
+
+    // Terms of particle j shared by 'share' spheres, written to atom i
+    auto write = [&](label i, label j, scalar share)
+    {
+        if (Ksl)
+        {
+            Ksl[i] = p.implicitCoeff[j]*share;
+            for (direction d = 0; d < 3; ++d) uf[i][d] = p.fluidVelocity[j][d];
+        }
+        if (fExpl)
         {
             for (direction d = 0; d < 3; ++d)
             {
-                fExpl[i][d] = p.explicitForce[i][d];
+                fExpl[i][d] = p.explicitForce[j][d]*share;
             }
         }
+    };
+
+    if (nB)
+    {
+        LAMMPS_NS::Multisphere& ms = multisphere_->data();
+        for (label i = 0; i < atom.nlocal; ++i)
+        {
+            const int bodyTag = multisphere_->belongs_to(i);
+            if (bodyTag >= 0)
+            {
+                const label b = ms.map(bodyTag);
+                write(i, b, 1.0/ms.nrigid(b));
+            }
+        }
+    }
+    forAll(atoms, k)
+    {
+        write(atoms[k], nB + k, 1.0);
     }
 }
 
@@ -460,11 +613,19 @@ void Foam::foamDEM::liggghtsEngine::materialProperties
 
 Foam::labelList Foam::foamDEM::liggghtsEngine::particleTypes() const
 {
+    // Atom types (0-based), in pull order: bodies (their spheres' type),
+    // then free spheres
     const LAMMPS_NS::Atom& atom = *lmp_->atom;
-    labelList types(atom.nlocal);
-    forAll(types, i)
+    const labelList atoms(freeAtoms());
+    const label nB = nBodies();
+    labelList types(nB + atoms.size());
+    for (label b = 0; b < nB; ++b)
     {
-        types[i] = atom.type[i] - 1;
+        types[b] = multisphere_->data().atomtype(b) - 1;
+    }
+    forAll(atoms, k)
+    {
+        types[nB + k] = atom.type[atoms[k]] - 1;
     }
     return types;
 }

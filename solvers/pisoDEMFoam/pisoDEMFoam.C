@@ -30,6 +30,7 @@ Description
 #include "pisoControl.H"
 #include "fvOptions.H"
 #include "demCoupling.H"
+#include "sigFpe.H"
 
 typedef Foam::PhaseIncompressibleTurbulenceModel
 <
@@ -45,6 +46,12 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+
+    // foamDEM checks particles and fields for NaN/Inf itself and stops
+    // with the particle or cell and the last good state written; a
+    // floating-point trap would kill the run first, without either
+    sigFpe::unset(true);
+
     #include "createTime.H"
     #include "createMesh.H"
 

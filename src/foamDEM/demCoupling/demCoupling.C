@@ -319,10 +319,14 @@ void Foam::foamDEM::demCoupling::stopWithLastGoodState(const string& message)
     );
     engine_->writeRestart(restart);
 
-    // The fluid fields hold the last completed step: write them under its
-    // time
+    // U and p hold the last completed step (the fluid check restores them
+    // first); the void fraction goes back to that step too. Written under
+    // that step's time; the other coupling fields are not written.
+    alpha_ == alpha_.oldTime();
     runTime.setTime(tFailed - runTime.deltaTValue(), runTime.timeIndex() - 1);
-    runTime.writeNow();
+    U_.write();
+    p_.write();
+    alpha_.write();
 
     FatalErrorInFunction
         << message.c_str() << nl
@@ -399,6 +403,13 @@ Foam::foamDEM::demCoupling::demCoupling
         dimensionedScalar("zero", dimDensity/dimTime, Zero)
     ),
     Us_
+    (
+        IOobject("UsDrag", mesh_.time().timeName(), mesh_),
+        mesh_,
+        dimensionedVector("zero", dimVelocity, Zero)
+    ),
+    averaging_(mesh_),
+    UsAvg_
     (
         IOobject
         (
@@ -483,6 +494,7 @@ Foam::foamDEM::demCoupling::demCoupling
     // What to exchange: only what the selected models need
     locate_->addRequirements(plan_);
     voidFraction_->addRequirements(plan_);
+    averaging_.addRequirements(plan_);
     for (const forceModel& f : forces_)
     {
         f.addRequirements(plan_);
@@ -555,6 +567,7 @@ void Foam::foamDEM::demCoupling::update()
     {
         scopedTimer timer(timers_.voidFraction);
         voidFraction_->compute(particles_, alpha_);
+        averaging_.average(particles_, voidFraction_(), UsAvg_);
     }
 
     {

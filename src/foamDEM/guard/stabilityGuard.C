@@ -145,7 +145,7 @@ void Foam::foamDEM::stabilityGuard::checkCellSize(scalar dMax)
 {
     const word vfType(coupling_.voidFractionType());
     const scalar handles =
-        vfType == "centre" ? 0.5 : vfType == "divided" ? 1.0 : GREAT;
+        vfType == "centre" ? 1.0/3.0 : vfType == "divided" ? 1.0 : GREAT;
 
     const particleData& p = coupling_.particles();
     const scalarField& V = coupling_.mesh().V();

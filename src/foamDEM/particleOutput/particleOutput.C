@@ -46,7 +46,8 @@ void Foam::foamDEM::particleOutput::write(const particleData& p) const
 
     makeField("U", [&](label i) { return p.velocity[i]; });
     makeField("d", [&](label i) { return p.diameter(i); });
-    makeField("origId", [&](label i) { return p.id[i]; });
+    // Not "origId": the cloud writes its own particle counter under that name
+    makeField("demId", [&](label i) { return p.id[i]; });
     makeField("f", [&](label i) { return p.fluidForce[i]; });
 
     cloud.write();

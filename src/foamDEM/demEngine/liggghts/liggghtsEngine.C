@@ -7,7 +7,6 @@
 #include <mpi.h>
 #include <cstdlib>
 #include <cstdio>
-#include <fstream>
 #include <string>
 
 // LIGGGHTS
@@ -50,29 +49,57 @@ namespace
     {
         if (liggghtsContext.empty() || !liggghtsMaster) return;
 
+        // The error line itself was echoed when LIGGGHTS wrote it
         std::fprintf
         (
             stderr,
             "\n--> foamDEM FATAL ERROR: LIGGGHTS stopped with an error while "
-            "%s.\n    LIGGGHTS said (from %s):\n",
+            "%s.\n    Full LIGGGHTS output: %s\n",
             liggghtsContext.c_str(), liggghtsLog.c_str()
         );
-        std::ifstream log(liggghtsLog);
-        std::string line;
-        bool any = false;
-        while (std::getline(log, line))
+        std::fflush(stderr);
+    }
+
+    // Rank 0's LIGGGHTS output: a stream that writes to the log file and
+    // echoes ERROR lines to stderr at once, with foamDEM's context. An error
+    // met on one rank ends in MPI_Abort, which runs no exit handler.
+    struct teeCookie
+    {
+        FILE* log;
+        std::string pending;
+    };
+
+    ssize_t teeWrite(void* cookie, const char* buf, size_t size)
+    {
+        teeCookie& c = *static_cast<teeCookie*>(cookie);
+        std::fwrite(buf, 1, size, c.log);
+        std::fflush(c.log);
+        c.pending.append(buf, size);
+        size_t eol;
+        while ((eol = c.pending.find('\n')) != std::string::npos)
         {
+            const std::string line(c.pending, 0, eol);
             if (line.find("ERROR") != std::string::npos)
             {
-                std::fprintf(stderr, "    %s\n", line.c_str());
-                any = true;
+                std::fprintf
+                (
+                    stderr, "\n--> foamDEM: LIGGGHTS error%s%s:\n    %s\n",
+                    liggghtsContext.empty() ? "" : " while ",
+                    liggghtsContext.c_str(), line.c_str()
+                );
+                std::fflush(stderr);
             }
+            c.pending.erase(0, eol + 1);
         }
-        if (!any)
-        {
-            std::fprintf(stderr, "    (no ERROR line found; see the log)\n");
-        }
-        std::fflush(stderr);
+        return ssize_t(size);
+    }
+
+    int teeClose(void* cookie)
+    {
+        teeCookie* c = static_cast<teeCookie*>(cookie);
+        const int status = std::fclose(c->log);
+        delete c;
+        return status;
     }
 
     struct contextGuard
@@ -164,6 +191,17 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
     if (!lmp_->screen)
     {
         lmp_->screen = stderr;
+    }
+    else
+    {
+        std::fflush(lmp_->screen);
+        cookie_io_functions_t io{nullptr, teeWrite, nullptr, teeClose};
+        FILE* tee = fopencookie(new teeCookie{lmp_->screen, {}}, "w", io);
+        if (tee)
+        {
+            std::setvbuf(tee, nullptr, _IOLBF, 0);
+            lmp_->screen = tee;
+        }
     }
 
     Info<< "    LIGGGHTS: reading " << scriptFile_.relative(caseDir)

@@ -30,25 +30,19 @@ void Foam::foamDEM::centreVoidFraction::addRequirements
 }
 
 
-void Foam::foamDEM::centreVoidFraction::compute
+void Foam::foamDEM::centreVoidFraction::distribute
 (
-    particleData& p,
-    volScalarField& alpha
+    const particleData& p,
+    particleCellWeights& w
 ) const
 {
-    scalarField solidVolume(mesh_.nCells(), Zero);
+    w.reset(p.size());
     forAll(p.cell, i)
     {
         if (p.cell[i] >= 0)
         {
-            solidVolume[p.cell[i]] += p.volume(i);
+            w.append(p.cell[i], 1);
         }
-    }
-
-    setFromSolidVolume(solidVolume, alpha);
-
-    forAll(p.cell, i)
-    {
-        p.voidFraction[i] = p.cell[i] >= 0 ? alpha[p.cell[i]] : 1.0;
+        w.endParticle();
     }
 }

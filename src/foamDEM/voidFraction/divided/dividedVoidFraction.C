@@ -1,0 +1,297 @@
+#include "dividedVoidFraction.H"
+#include "cyclicPolyPatch.H"
+#include "processorPolyPatch.H"
+#include "FixedList.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace foamDEM
+{
+    defineTypeNameAndDebug(dividedVoidFraction, 0);
+    addToRunTimeSelectionTable(voidFractionModel, dividedVoidFraction, dictionary);
+}
+}
+
+
+const Foam::label Foam::foamDEM::dividedVoidFraction::nSubVolumes;
+
+
+namespace
+{
+    //- Root-mean-square radius of the shell a < r < b
+    Foam::scalar rmsRadius(Foam::scalar a, Foam::scalar b)
+    {
+        using Foam::pow;
+        return Foam::sqrt
+        (
+            0.6*(pow(b, 5) - pow(a, 5))/(pow(b, 3) - pow(a, 3))
+        );
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Private functions  * * * * * * * * * * * * //
+
+Foam::List<Foam::vector>
+Foam::foamDEM::dividedVoidFraction::makeUnitPoints()
+{
+    const scalar phi = 0.5*(1 + sqrt(5.0));
+    const scalar N = nSubVolumes;
+
+    // Shell bounds: the core and the inner shell hold 1 and 12 sub-volumes
+    const scalar rCore = cbrt(1/N);
+    const scalar rInner = cbrt(13/N);
+    const scalar r1 = rmsRadius(rCore, rInner);
+    const scalar r2 = rmsRadius(rInner, 1);
+
+    DynamicList<vector> pts(nSubVolumes);
+    pts.append(vector::zero);
+
+    const scalar sign[2] = {-1, 1};
+
+    // Icosahedron vertices: cyclic permutations of (0, +-1, +-phi)
+    for (const scalar s1 : sign)
+    {
+        for (const scalar s2 : sign)
+        {
+            for (const vector& v :
+                {vector(0, s1, s2*phi), vector(s1, s2*phi, 0),
+                 vector(s2*phi, 0, s1)})
+            {
+                pts.append(r1*v/mag(v));
+            }
+        }
+    }
+
+    // Dodecahedron vertices: (+-1, +-1, +-1) and cyclic permutations of
+    // (0, +-1/phi, +-phi)
+    for (const scalar s1 : sign)
+    {
+        for (const scalar s2 : sign)
+        {
+            for (const scalar s3 : sign)
+            {
+                const vector v(s1, s2, s3);
+                pts.append(r2*v/mag(v));
+            }
+            for (const vector& v :
+                {vector(0, s1/phi, s2*phi), vector(s1/phi, s2*phi, 0),
+                 vector(s2*phi, 0, s1/phi)})
+            {
+                pts.append(r2*v/mag(v));
+            }
+        }
+    }
+
+    return List<vector>(std::move(pts));
+}
+
+
+bool Foam::foamDEM::dividedVoidFraction::pointsInsideCell
+(
+    const point& x,
+    scalar r,
+    label celli
+) const
+{
+    const scalar reach = r*maxPointRadius_;
+    const vectorField& Sf = mesh_.faceAreas();
+    const vectorField& Cf = mesh_.faceCentres();
+    const labelList& own = mesh_.faceOwner();
+
+    for (const label facei : mesh_.cells()[celli])
+    {
+        const vector n =
+            (own[facei] == celli ? 1 : -1)*Sf[facei]/mag(Sf[facei]);
+        if (((Cf[facei] - x) & n) < reach)
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
+Foam::label Foam::foamDEM::dividedVoidFraction::locatePoint
+(
+    const point& y0,
+    label own
+) const
+{
+    const vectorField& Sf = mesh_.faceAreas();
+    const vectorField& Cf = mesh_.faceCentres();
+    const labelList& owner = mesh_.faceOwner();
+    const labelList& neighbour = mesh_.faceNeighbour();
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+
+    point y = y0;
+    label celli = own;
+    for (label step = 0; step < maxWalkSteps_; ++step)
+    {
+        // The face whose plane y lies furthest outside of
+        label exitFace = -1;
+        scalar exitDistance = 0;
+        for (const label facei : mesh_.cells()[celli])
+        {
+            const scalar d =
+                (owner[facei] == celli ? 1 : -1)
+               *((y - Cf[facei]) & Sf[facei])/mag(Sf[facei]);
+            if (d > exitDistance)
+            {
+                exitDistance = d;
+                exitFace = facei;
+            }
+        }
+        if (exitFace < 0)
+        {
+            return celli;
+        }
+
+        ++nWalkSteps_;
+        if (mesh_.isInternalFace(exitFace))
+        {
+            celli =
+                owner[exitFace] == celli
+              ? neighbour[exitFace]
+              : owner[exitFace];
+            continue;
+        }
+
+        const polyPatch& pp = patches[patches.whichPatch(exitFace)];
+        if (isA<processorPolyPatch>(pp))
+        {
+            // On another processor
+            ++nOutside_;
+            return own;
+        }
+        if
+        (
+            isA<cyclicPolyPatch>(pp)
+         && refCast<const cyclicPolyPatch>(pp).parallel()
+        )
+        {
+            // Across a translational cyclic: shift, continue on the other side
+            const polyPatch& nbr =
+                refCast<const cyclicPolyPatch>(pp).neighbPatch();
+            const label f = exitFace - pp.start();
+            y += nbr.faceCentres()[f] - pp.faceCentres()[f];
+            celli = nbr.faceCells()[f];
+            ++nPeriodicCrossings_;
+            continue;
+        }
+        // A wall or other boundary: outside, unless the domain is concave
+        break;
+    }
+
+    ++nTreeSearches_;
+    const label found = search_.findCell(y, -1, true);
+    if (found >= 0)
+    {
+        return found;
+    }
+    ++nOutside_;
+    return own;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::foamDEM::dividedVoidFraction::dividedVoidFraction
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    voidFractionModel(dict, mesh),
+    unitPoints_(makeUnitPoints()),
+    maxPointRadius_(max(mag(vectorField(unitPoints_)))),
+    maxWalkSteps_(dict.getOrDefault<label>("maxWalkSteps", 100)),
+    search_(mesh, polyMesh::CELL_TETS),
+    nFastParticles_(0),
+    nWalkSteps_(0),
+    nTreeSearches_(0),
+    nPeriodicCrossings_(0),
+    nOutside_(0)
+{}
+
+
+// * * * * * * * * * * * * * * * Member functions  * * * * * * * * * * * * * //
+
+void Foam::foamDEM::dividedVoidFraction::addRequirements
+(
+    exchangePlan& plan
+) const
+{
+    plan.need(quantity::position, typeName);
+    plan.need(quantity::radius, typeName);
+}
+
+
+void Foam::foamDEM::dividedVoidFraction::distribute
+(
+    const particleData& p,
+    particleCellWeights& w
+) const
+{
+    w.reset(p.size());
+
+    FixedList<label, nSubVolumes> cells;
+    FixedList<label, nSubVolumes> counts;
+
+    forAll(p.cell, i)
+    {
+        const label own = p.cell[i];
+        if (own < 0)
+        {
+            w.endParticle();
+            continue;
+        }
+
+        const point& x = p.position[i];
+        const scalar r = p.radius[i];
+
+        if (pointsInsideCell(x, r, own))
+        {
+            ++nFastParticles_;
+            w.append(own, 1);
+            w.endParticle();
+            continue;
+        }
+
+        // The core's point is the centre: in the particle's cell
+        cells[0] = own;
+        counts[0] = 1;
+        label n = 1;
+        for (label j = 1; j < nSubVolumes; ++j)
+        {
+            const label celli = locatePoint(x + r*unitPoints_[j], own);
+            label k = 0;
+            while (k < n && cells[k] != celli)
+            {
+                ++k;
+            }
+            if (k == n)
+            {
+                cells[n] = celli;
+                counts[n] = 0;
+                ++n;
+            }
+            ++counts[k];
+        }
+        for (label k = 0; k < n; ++k)
+        {
+            w.append(cells[k], scalar(counts[k])/nSubVolumes);
+        }
+        w.endParticle();
+    }
+
+    if (debug)
+    {
+        Info<< typeName << ": particles whole in their cell "
+            << nFastParticles_ << ", walk steps " << nWalkSteps_
+            << ", tree searches " << nTreeSearches_ << ", cyclic crossings "
+            << nPeriodicCrossings_ << ", points outside to own cell "
+            << nOutside_ << endl;
+    }
+}

@@ -1,0 +1,1101 @@
+/*---------------------------------------------------------------------------*\
+Application
+    testVoidFraction
+
+Description
+    Tests of the void fraction models (centre, divided, smoothed) and of
+    particleAveraging on a real mesh. Particles are made by hand with a
+    fixed seed: random ones (some outside the mesh), on cell faces, mesh
+    edges and mesh points, straddling walls, larger than cells, and a dense
+    cluster that must be clipped. Checks, per model:
+      - exchange plan: the model asks for what it uses;
+      - bounds: alphaMin <= eps <= 1 in cells and on patches;
+      - conservation: sum_c (1 - eps_c) V_c = sum_i V_i - lost, 1e-12
+        relative, and nothing clipped or lost where nothing may be;
+      - cell weights: per particle in the mesh they sum to 1, none for
+        particles outside; particle eps = sum_c w_ic eps_c;
+      - averaging: a uniform particle velocity comes back exactly in the
+        cells with particles (0 elsewhere for unsmoothed models), and the
+        average conserves the particles' momentum sum_i V_i v_i;
+      - smoothed: no new maxima, no negative values.
+    Suites (-suite): box (sheared, graded mesh with walls), periodic (cyclic
+    in x: conservation and spreading across the periodic plane), parallel
+    (the box decomposed; processor patches), badInput (FatalIOError on
+    inconsistent keys).
+
+    Exit code 1 when any check fails; every check prints PASS or FAIL.
+
+Usage
+    testVoidFraction -case <case> -suite box|periodic|parallel|badInput [-parallel]
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "Random.H"
+#include "OStringStream.H"
+#include "processorPolyPatch.H"
+#include "clockTime.H"
+#include <algorithm>
+
+#include "voidFractionModel.H"
+#include "smoothedVoidFraction.H"
+#include "dividedVoidFraction.H"
+#include "locateModel.H"
+#include "particleAveraging.H"
+
+using namespace Foam;
+using namespace Foam::foamDEM;
+
+namespace
+{
+
+label nPassed = 0;
+label nFailed = 0;
+
+template<class... Args>
+std::string str(const Args&... args)
+{
+    OStringStream os;
+    os.precision(3);
+    (void)std::initializer_list<int>{((void)(os << args), 0)...};
+    return os.str();
+}
+
+//- Record a check; collective in parallel: passes only if it passes on
+//  every processor (the message is the master's)
+void check(bool ok, const std::string& what)
+{
+    ok = returnReduce(ok, andOp<bool>());
+    if (ok)
+    {
+        ++nPassed;
+        Info<< "PASS " << what.c_str() << nl;
+    }
+    else
+    {
+        ++nFailed;
+        Info<< "FAIL " << what.c_str() << nl;
+    }
+}
+
+
+//- Particle positions and radii
+struct particleSet
+{
+    DynamicList<point> x;
+    DynamicList<scalar> r;
+    void add(const point& p, scalar radius) { x.append(p); r.append(radius); }
+    void add(const particleSet& s) { x.append(s.x); r.append(s.r); }
+    label size() const { return x.size(); }
+};
+
+
+exchangePlan testPlan()
+{
+    exchangePlan plan;
+    for (quantity q : {quantity::position, quantity::radius,
+                       quantity::velocity, quantity::id})
+    {
+        plan.need(q, "testVoidFraction");
+    }
+    return plan;
+}
+
+
+//- Particle data located in the mesh by the library's locate model
+particleData makeParticles(const fvMesh& mesh, const particleSet& s)
+{
+    particleData p;
+    p.resize(s.size(), testPlan());
+    p.position = s.x;
+    p.radius = s.r;
+    p.velocity = Zero;
+    p.id = identity(s.size());
+
+    dictionary dict;
+    dict.add("locate", word("hinted"));
+    locateModel::New(dict, mesh)->locate(p);
+    return p;
+}
+
+
+scalar typicalCellSize(const fvMesh& mesh)
+{
+    return Foam::cbrt(gAverage(mesh.V()));
+}
+
+
+dictionary couplingDict(const word& model, const dictionary& coeffs)
+{
+    dictionary dict;
+    dict.add("voidFraction", model);
+    dict.add(word(model + "Coeffs"), coeffs);
+    return dict;
+}
+
+
+//- Solid fraction from the model's cell weights, before smoothing
+scalarField rawSolidFraction
+(
+    const fvMesh& mesh,
+    const particleData& p,
+    const particleCellWeights& w
+)
+{
+    scalarField s(mesh.nCells(), Zero);
+    for (label i = 0; i < p.size(); ++i)
+    {
+        for (label k = w.start(i); k < w.end(i); ++k)
+        {
+            s[w.cell(k)] += w.weight(k)*p.volume(i);
+        }
+    }
+    return s/mesh.V();
+}
+
+
+struct expectations
+{
+    bool noClipping = false;     // nothing may be clipped
+    bool clipping = false;       // something must be clipped
+    bool noLoss = true;          // all solid volume must be kept
+    bool needsPosition = false;  // model must ask for positions
+};
+
+
+//- Run one model on one particle set and check everything; returns the
+//  model for further checks
+autoPtr<voidFractionModel> testModel
+(
+    const fvMesh& mesh,
+    const word& name,
+    const dictionary& dict,
+    particleData& p,
+    const expectations& expect,
+    volScalarField& alpha
+)
+{
+    Info<< nl << "== " << name.c_str() << nl;
+    autoPtr<voidFractionModel> model = voidFractionModel::New(dict, mesh);
+
+    // Exchange plan
+    {
+        exchangePlan plan;
+        model->addRequirements(plan);
+        check(plan.has(quantity::radius), name + ": asks for radius");
+        if (expect.needsPosition)
+        {
+            check(plan.has(quantity::position), name + ": asks for position");
+        }
+    }
+
+    model->compute(p, alpha);
+    const scalar alphaMin = model->alphaMin();
+    const scalarField& V = mesh.V();
+
+    // Bounds, cells and patches
+    {
+        scalar aMin = gMin(alpha.primitiveField());
+        scalar aMax = gMax(alpha.primitiveField());
+        for (const fvPatchScalarField& pf : alpha.boundaryField())
+        {
+            if (pf.size())
+            {
+                aMin = min(aMin, min(pf));
+                aMax = max(aMax, max(pf));
+            }
+        }
+        check
+        (
+            aMin >= alphaMin && aMax <= 1,
+            str(name, ": bounds ", aMin, " .. ", aMax, " in [", alphaMin,
+                ", 1]")
+        );
+    }
+
+    // Conservation
+    scalar particleVolume = 0;
+    forAll(p.cell, i)
+    {
+        if (p.cell[i] >= 0)
+        {
+            particleVolume += p.volume(i);
+        }
+    }
+    reduce(particleVolume, sumOp<scalar>());
+    const scalar solidInMesh = gSum((1 - alpha.primitiveField())*V);
+    const scalar lost = model->lostSolidVolume();
+    const scalar conservationError =
+        mag(solidInMesh + lost - particleVolume)/particleVolume;
+    check
+    (
+        conservationError <= 1e-12,
+        str(name, ": conservation, relative error ", conservationError,
+            " (nClipped ", model->nClipped(), ", clipped volume fraction ",
+            model->clippedVolume()/particleVolume, ", lost fraction ",
+            lost/particleVolume, ")")
+    );
+    if (expect.noLoss)
+    {
+        check
+        (
+            mag(lost) <= 1e-14*particleVolume,
+            str(name, ": no solid volume lost (", lost/particleVolume, ")")
+        );
+    }
+    if (expect.noClipping)
+    {
+        check
+        (
+            model->nClipped() == 0,
+            str(name, ": nothing clipped (nClipped ", model->nClipped(), ")")
+        );
+    }
+    if (expect.clipping)
+    {
+        check
+        (
+            model->nClipped() > 0 && model->clippedVolume() > 0,
+            str(name, ": clipping reported (nClipped ", model->nClipped(),
+                ")")
+        );
+    }
+
+    // Cell weights and particle void fraction
+    const particleCellWeights& w = model->cellWeights();
+    {
+        bool ok = w.nParticles() == p.size();
+        scalar maxSumError = 0;
+        scalar maxEpsError = 0;
+        bool epsBounded = true;
+        for (label i = 0; ok && i < p.size(); ++i)
+        {
+            if (p.cell[i] < 0)
+            {
+                ok = w.start(i) == w.end(i) && p.voidFraction[i] == 1;
+                continue;
+            }
+            scalar sumW = 0;
+            scalar eps = 0;
+            for (label k = w.start(i); k < w.end(i); ++k)
+            {
+                const label c = w.cell(k);
+                ok = ok && c >= 0 && c < mesh.nCells() && w.weight(k) > 0;
+                if (!ok) break;
+                sumW += w.weight(k);
+                eps += w.weight(k)*alpha[c];
+            }
+            maxSumError = max(maxSumError, mag(sumW - 1));
+            maxEpsError = max(maxEpsError, mag(eps - p.voidFraction[i]));
+            epsBounded = epsBounded
+                && p.voidFraction[i] >= alphaMin*(1 - 1e-14)
+                && p.voidFraction[i] <= 1 + 1e-14;
+        }
+        check
+        (
+            ok && maxSumError <= 1e-14,
+            str(name, ": weights valid, per particle sum 1 (max error ",
+                maxSumError, "), none outside the mesh; ", w.size(),
+                " pairs for ", p.size(), " particles")
+        );
+        check
+        (
+            maxEpsError <= 1e-14 && epsBounded,
+            str(name, ": particle eps = sum_c w_ic eps_c (max error ",
+                maxEpsError, "), bounded")
+        );
+    }
+
+    // Smoothing: no new maxima, no negative values
+    const scalarField s0(rawSolidFraction(mesh, p, w));
+    if (model->smooths())
+    {
+        const scalarField& s = model->solidFraction();
+        const scalar s0Max = gMax(s0);
+        check
+        (
+            gMax(s) <= s0Max*(1 + 1e-12) && gMin(s) >= -1e-12*s0Max
+         && gMax(s) < s0Max,
+            str(name, ": smoothing: max ", gMax(s), " < unsmoothed max ",
+                s0Max, ", min ", gMin(s))
+        );
+    }
+
+    // Averaging a uniform velocity
+    particleAveraging averaging(mesh);
+    {
+        exchangePlan plan;
+        averaging.addRequirements(plan);
+        check
+        (
+            plan.has(quantity::velocity) && plan.has(quantity::radius),
+            "particleAveraging: asks for velocity and radius"
+        );
+    }
+    volVectorField Us
+    (
+        IOobject
+        (
+            "Us." + name, mesh.time().timeName(), mesh,
+            IOobject::NO_READ, IOobject::NO_WRITE, false
+        ),
+        mesh,
+        dimensionedVector("zero", dimVelocity, Zero)
+    );
+    {
+        const vector v0(0.3, -1.2, 0.05);
+        p.velocity = v0;
+        averaging.average(p, model(), Us);
+        scalar maxError = 0;
+        bool zeroElsewhere = true;
+        label nWithParticles = 0;
+        forAll(Us, c)
+        {
+            if (s0[c] > 0)
+            {
+                ++nWithParticles;
+                maxError = max(maxError, mag(Us[c] - v0)/mag(v0));
+            }
+            else if (!model->smooths())
+            {
+                zeroElsewhere = zeroElsewhere && Us[c] == vector::zero;
+            }
+        }
+        check
+        (
+            maxError <= 1e-12 && zeroElsewhere,
+            str(name, ": uniform velocity averaged back in ", nWithParticles,
+                " cells with particles, max relative error ", maxError,
+                (model->smooths() ? "" : ", zero elsewhere"))
+        );
+    }
+
+    // Averaging conserves momentum sum_i V_i v_i
+    {
+        Random rnd(4711);
+        forAll(p.velocity, i)
+        {
+            p.velocity[i] = rnd.position(vector(-1, -1, -1), vector(1, 1, 1));
+        }
+        averaging.average(p, model(), Us);
+        vector particleMomentum = Zero;
+        forAll(p.cell, i)
+        {
+            if (p.cell[i] >= 0)
+            {
+                particleMomentum += p.volume(i)*p.velocity[i];
+            }
+        }
+        reduce(particleMomentum, sumOp<vector>());
+        const vector cellMomentum =
+            gSum(Us.primitiveField()*model->solidFraction()*V);
+        scalar scale = 0;
+        forAll(p.cell, i)
+        {
+            if (p.cell[i] >= 0)
+            {
+                scale += p.volume(i)*mag(p.velocity[i]);
+            }
+        }
+        reduce(scale, sumOp<scalar>());
+        const scalar error = mag(cellMomentum - particleMomentum)/scale;
+        check
+        (
+            error <= 1e-12,
+            str(name, ": averaging conserves sum_i V_i v_i, relative error ",
+                error)
+        );
+
+        // A weighted average: within the particles' range, per component
+        vector vMin = vector::uniform(GREAT), vMax = vector::uniform(-GREAT);
+        forAll(p.cell, i)
+        {
+            if (p.cell[i] >= 0)
+            {
+                vMin = min(vMin, p.velocity[i]);
+                vMax = max(vMax, p.velocity[i]);
+            }
+        }
+        reduce(vMin, minOp<vector>());
+        reduce(vMax, maxOp<vector>());
+        const scalar tol = 1e-12*cmptMax(vMax - vMin);
+        label nOut = 0;
+        forAll(Us, c)
+        {
+            if (s0[c] > 0)
+            {
+                for (direction d = 0; d < vector::nComponents; ++d)
+                {
+                    nOut += Us[c][d] < vMin[d] - tol || Us[c][d] > vMax[d] + tol;
+                }
+            }
+        }
+        check
+        (
+            returnReduce(nOut, sumOp<label>()) == 0,
+            str(name, ": averages of random velocities lie within the "
+                "particles' range (", nOut, " components outside)")
+        );
+        p.velocity = Zero;
+    }
+
+    return model;
+}
+
+
+// * * * * * * * * * * * * * * * * Particle sets * * * * * * * * * * * * * //
+
+//- Small particles everywhere, also on faces, edges, points, walls and
+//  outside. Index of a particle well inside one cell and of one centred on
+//  an internal face.
+particleSet diluteSet(const fvMesh& mesh, label& insideOne, label& onFace)
+{
+    Random rnd(12345);
+    const scalar h = typicalCellSize(mesh);
+    const boundBox bb(mesh.points());
+    particleSet s;
+
+    // Random, in a box a bit larger than the mesh: some fall outside
+    for (label i = 0; i < 60; ++i)
+    {
+        s.add
+        (
+            rnd.position(bb.min() - point::uniform(0.5*h),
+                         bb.max() + point::uniform(0.5*h)),
+            h*(0.05 + 0.25*rnd.sample01<scalar>())
+        );
+    }
+
+    // Well inside the largest cell
+    insideOne = s.size();
+    s.add(mesh.C()[findMax(mesh.V())], 0.05*h);
+
+    // On internal face centres
+    onFace = s.size();
+    for (label i = 0; i < 6; ++i)
+    {
+        const label f = rnd.position<label>(0, mesh.nInternalFaces() - 1);
+        s.add(mesh.faceCentres()[f], 0.3*h);
+    }
+
+    // On mesh points (cell corners, also on the boundary) and edge centres
+    for (label i = 0; i < 6; ++i)
+    {
+        s.add(mesh.points()[rnd.position<label>(0, mesh.nPoints() - 1)], 0.2*h);
+        const edge& e = mesh.edges()[rnd.position<label>(0, mesh.nEdges() - 1)];
+        s.add(e.centre(mesh.points()), 0.2*h);
+    }
+
+    // Straddling walls: centre inside, half a radius from a boundary face
+    for (label i = 0; i < 6; ++i)
+    {
+        const label f = mesh.nInternalFaces()
+          + rnd.position<label>(0, mesh.nBoundaryFaces() - 1);
+        const vector n = mesh.faceAreas()[f]/mag(mesh.faceAreas()[f]);
+        s.add(mesh.faceCentres()[f] - 0.15*h*n, 0.3*h);
+    }
+
+    // Outside
+    s.add(bb.max() + point::uniform(h), 0.3*h);
+    s.add(bb.min() - point(h, 0, 0), 0.3*h);
+    s.add(bb.midpoint() + vector(0, 0, bb.span().z()), 0.3*h);
+
+    return s;
+}
+
+
+//- Particles larger than the cells, inside and straddling walls
+particleSet largeSet(const fvMesh& mesh)
+{
+    Random rnd(777);
+    const scalar h = typicalCellSize(mesh);
+    const boundBox bb(mesh.points());
+    particleSet s;
+    for (label i = 0; i < 8; ++i)
+    {
+        const label c = rnd.position<label>(0, mesh.nCells() - 1);
+        s.add(mesh.C()[c], h*(0.8 + 0.7*rnd.sample01<scalar>()));
+    }
+    for (label i = 0; i < 3; ++i)
+    {
+        const label f = mesh.nInternalFaces()
+          + rnd.position<label>(0, mesh.nBoundaryFaces() - 1);
+        const vector n = mesh.faceAreas()[f]/mag(mesh.faceAreas()[f]);
+        s.add(mesh.faceCentres()[f] - 0.3*h*n, 1.2*h);
+    }
+    return s;
+}
+
+
+//- A dense cluster: 2h x 2h x 2h packed with small particles
+particleSet denseSet(const fvMesh& mesh)
+{
+    Random rnd(99);
+    const scalar h = typicalCellSize(mesh);
+    const point centre = mesh.C()[mesh.nCells()/2];
+    particleSet s;
+    for (label i = 0; i < 150; ++i)
+    {
+        s.add
+        (
+            rnd.position(centre - point::uniform(h), centre + point::uniform(h)),
+            0.35*h
+        );
+    }
+    return s;
+}
+
+
+volScalarField makeAlpha(const fvMesh& mesh, const word& name)
+{
+    return volScalarField
+    (
+        IOobject
+        (
+            name, mesh.time().timeName(), mesh,
+            IOobject::NO_READ, IOobject::NO_WRITE, false
+        ),
+        mesh,
+        dimensionedScalar("one", dimless, 1),
+        voidFractionModel::patchTypes(mesh)
+    );
+}
+
+
+//- The model configurations every suite runs
+List<Tuple2<word, dictionary>> modelConfigs(scalar h)
+{
+    List<Tuple2<word, dictionary>> configs;
+
+    configs.append({"centre", couplingDict("centre", dictionary())});
+    configs.append({"divided", couplingDict("divided", dictionary())});
+    {
+        dictionary coeffs;
+        coeffs.add("base", word("centre"));
+        coeffs.add("smoothingLength", 1.5*h);
+        configs.append({"smoothed(centre)", couplingDict("smoothed", coeffs)});
+    }
+    {
+        dictionary coeffs;
+        coeffs.add("base", word("divided"));
+        coeffs.add("smoothingLengthInDiameters", 2.0);
+        configs.append
+        (
+            {"smoothed(divided)", couplingDict("smoothed", coeffs)}
+        );
+    }
+    return configs;
+}
+
+
+bool usesDivided(const word& label)
+{
+    return label.find("divided") != std::string::npos;
+}
+
+
+// * * * * * * * * * * * * * * * * * Suites  * * * * * * * * * * * * * * * //
+
+void boxSuite(const fvMesh& mesh)
+{
+    const scalar h = typicalCellSize(mesh);
+    volScalarField alpha(makeAlpha(mesh, "alpha"));
+
+    label insideOne = -1, onFace = -1;
+    const particleSet dilute(diluteSet(mesh, insideOne, onFace));
+    particleData p(makeParticles(mesh, dilute));
+    label nOutside = 0;
+    forAll(p.cell, i)
+    {
+        nOutside += p.cell[i] < 0;
+    }
+    Info<< "dilute set: " << p.size() << " particles, " << nOutside
+        << " outside the mesh; typical cell size " << h << " m" << nl;
+    check(nOutside > 0, "dilute set has particles outside the mesh");
+
+    for (const auto& config : modelConfigs(h))
+    {
+        expectations expect;
+        expect.noClipping = true;
+        expect.needsPosition = usesDivided(config.first());
+        autoPtr<voidFractionModel> model = testModel
+        (
+            mesh, "dilute " + config.first(), config.second(), p, expect,
+            alpha
+        );
+
+        const particleCellWeights& w = model->cellWeights();
+        if (config.first() == "centre")
+        {
+            bool same = true;
+            forAll(p.cell, i)
+            {
+                same = same
+                 && (p.cell[i] < 0
+                  || (w.end(i) == w.start(i) + 1
+                   && w.cell(w.start(i)) == p.cell[i]
+                   && w.weight(w.start(i)) == 1
+                   && p.voidFraction[i] == alpha[p.cell[i]]));
+            }
+            check(same, "centre: weight 1 in the particle's cell, sees its eps");
+        }
+        if (config.first() == "divided")
+        {
+            check
+            (
+                w.end(insideOne) - w.start(insideOne) == 1,
+                "divided: a particle well inside a cell stays in it"
+            );
+            label nSplit = 0;
+            for (label i = onFace; i < onFace + 6; ++i)
+            {
+                nSplit += (w.end(i) - w.start(i) >= 2);
+            }
+            check
+            (
+                nSplit == 6,
+                str("divided: particles on internal faces split over >= 2 "
+                    "cells (", nSplit, " of 6)")
+            );
+        }
+    }
+
+    // divided's sub-volume points: 33, centroid at the centre, second
+    // moment of the shells: 3/5 (1 - rCore^5) R^2 with rCore^3 = 1/33
+    {
+        autoPtr<voidFractionModel> model =
+            voidFractionModel::New(couplingDict("divided", dictionary()), mesh);
+        const List<vector>& u =
+            refCast<const dividedVoidFraction>(model()).unitPoints();
+        const vectorField pts(u);
+        const scalar secondMoment = sum(magSqr(pts))/pts.size();
+        const scalar expected = 0.6*(1 - Foam::pow(1.0/33, 5.0/3));
+        check
+        (
+            pts.size() == 33 && mag(sum(pts)) < 1e-14
+         && mag(secondMoment - expected) < 1e-14 && max(mag(pts)) < 1,
+            str("divided: 33 points, centroid ", mag(sum(pts)),
+                ", second moment ", secondMoment, " (expected ", expected,
+                ")")
+        );
+    }
+
+    // Larger than cells: clipped, the excess redistributed
+    particleData pLarge(makeParticles(mesh, largeSet(mesh)));
+    for (const auto& config : modelConfigs(h))
+    {
+        expectations expect;
+        expect.needsPosition = usesDivided(config.first());
+        if (config.first() == "centre" || config.first() == "divided")
+        {
+            expect.clipping = true;
+        }
+        testModel
+        (
+            mesh, "large " + config.first(), config.second(), pLarge, expect,
+            alpha
+        );
+    }
+
+    // Dense cluster
+    particleData pDense(makeParticles(mesh, denseSet(mesh)));
+    for (const auto& config : modelConfigs(h))
+    {
+        expectations expect;
+        expect.needsPosition = usesDivided(config.first());
+        expect.clipping = true;
+        testModel
+        (
+            mesh, "dense " + config.first(), config.second(), pDense, expect,
+            alpha
+        );
+    }
+
+    // Without redistribution the excess is lost, and reported
+    {
+        dictionary coeffs;
+        coeffs.add("redistributeClipped", false);
+        coeffs.add("alphaMin", 0.5);
+        expectations expect;
+        expect.clipping = true;
+        expect.noLoss = false;
+        autoPtr<voidFractionModel> model = testModel
+        (
+            mesh, "dense centre, no redistribution, alphaMin 0.5",
+            couplingDict("centre", coeffs), pDense, expect, alpha
+        );
+        check
+        (
+            mag(model->lostSolidVolume() - model->clippedVolume())
+         <= 1e-12*model->clippedVolume()
+         && model->lostSolidVolume() > 0,
+            str("no redistribution: lost volume ", model->lostSolidVolume(),
+                " = clipped excess ", model->clippedVolume())
+        );
+        check
+        (
+            gMin(alpha.primitiveField()) == 0.5,
+            str("alphaMin 0.5 reached: min eps ", gMin(alpha.primitiveField()))
+        );
+    }
+}
+
+
+void periodicSuite(const fvMesh& mesh)
+{
+    const scalar h = typicalCellSize(mesh);
+    const boundBox bb(mesh.points());
+    const scalar Lx = bb.span().x();
+    volScalarField alpha(makeAlpha(mesh, "alpha"));
+
+    // Straddling the periodic planes, plus random ones
+    particleSet s;
+    const label atLeft = 0;
+    s.add(bb.min() + vector(0.2*h, 3.1*h, 3*h), 0.8*h);
+    const label atRight = 1;
+    s.add(bb.min() + vector(Lx - 0.3*h, 2*h, 2.5*h), 0.6*h);
+    Random rnd(2024);
+    for (label i = 0; i < 30; ++i)
+    {
+        s.add(rnd.position(bb.min(), bb.max()), h*(0.1 + 0.4*rnd.sample01<scalar>()));
+    }
+    particleData p(makeParticles(mesh, s));
+
+    for (const auto& config : modelConfigs(h))
+    {
+        expectations expect;
+        expect.needsPosition = usesDivided(config.first());
+        autoPtr<voidFractionModel> model = testModel
+        (
+            mesh, "periodic " + config.first(), config.second(), p, expect,
+            alpha
+        );
+        if (usesDivided(config.first()))
+        {
+            // Sub-volumes beyond a periodic plane land on the other side
+            const particleCellWeights& w = model->cellWeights();
+            scalar wrappedLeft = 0, wrappedRight = 0;
+            for (label k = w.start(atLeft); k < w.end(atLeft); ++k)
+            {
+                if (mesh.C()[w.cell(k)].x() > bb.midpoint().x())
+                {
+                    wrappedLeft += w.weight(k);
+                }
+            }
+            for (label k = w.start(atRight); k < w.end(atRight); ++k)
+            {
+                if (mesh.C()[w.cell(k)].x() < bb.midpoint().x())
+                {
+                    wrappedRight += w.weight(k);
+                }
+            }
+            check
+            (
+                wrappedLeft > 0 && wrappedRight > 0,
+                str(config.first(), ": weight across the periodic plane ",
+                    wrappedLeft, " (particle at x = 0.2h), ", wrappedRight,
+                    " (at x = L - 0.3h)")
+            );
+        }
+    }
+
+    // Smoothing across the periodic plane: one particle in the middle of a
+    // first-layer cell; the cells one cell away on either side (across the
+    // plane and inside) must get the same smoothed solid fraction
+    {
+        particleSet one;
+        const point x0 = bb.min() + vector(0.5*h, 2.5*h, 2.5*h);
+        one.add(x0, 0.4*h);
+        particleData p1(makeParticles(mesh, one));
+
+        dictionary coeffs;
+        coeffs.add("base", word("centre"));
+        coeffs.add("smoothingLength", 1.5*h);
+        autoPtr<voidFractionModel> model =
+            voidFractionModel::New(couplingDict("smoothed", coeffs), mesh);
+        model->compute(p1, alpha);
+        const scalarField& sf = model->solidFraction();
+
+        const label inside = mesh.findCell(x0 + vector(h, 0, 0));
+        const label across = mesh.findCell(x0 + vector(Lx - h, 0, 0));
+        const label far = mesh.findCell(x0 + vector(0.5*Lx, 0, 0));
+        if (inside < 0 || across < 0 || far < 0)
+        {
+            check(false, "periodic suite: cells for the symmetry check found");
+            return;
+        }
+        const scalar asymmetry =
+            mag(sf[across] - sf[inside])/sf[inside];
+        check
+        (
+            asymmetry <= 1e-9 && sf[across] > 10*sf[far],
+            str("smoothed: same solid fraction one cell away inside (",
+                sf[inside], ") and across the periodic plane (", sf[across],
+                "), relative difference ", asymmetry, "; far ", sf[far])
+        );
+    }
+}
+
+
+//- Run on a decomposed mesh: random particles, small and large, every
+//  model; checks as in the other suites, over all processors
+void parallelSuite(const fvMesh& mesh)
+{
+    label nProcPatches = 0;
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        nProcPatches += isA<processorPolyPatch>(pp) ? 1 : 0;
+    }
+    check
+    (
+        Pstream::parRun() && returnReduce(nProcPatches, sumOp<label>()) > 0,
+        str("running on ", Pstream::nProcs(), " processors with processor"
+            " patches")
+    );
+
+    const boundBox bb(mesh.points(), true);
+    const scalar h = typicalCellSize(mesh);
+    Random rnd(31);
+    particleSet s;
+    for (label i = 0; i < 80; ++i)
+    {
+        s.add(rnd.position(bb.min(), bb.max()), h*(0.1 + 0.3*rnd.sample01<scalar>()));
+    }
+    for (label i = 0; i < 6; ++i)
+    {
+        s.add(rnd.position(bb.min(), bb.max()), h*(0.8 + 0.5*rnd.sample01<scalar>()));
+    }
+    particleData p(makeParticles(mesh, s));
+    const label nLocated = returnReduce
+    (
+        label(std::count_if(p.cell.begin(), p.cell.end(),
+                            [](label c){ return c >= 0; })),
+        sumOp<label>()
+    );
+    Info<< nLocated << " of " << s.size() << " particles located" << nl;
+
+    volScalarField alpha(makeAlpha(mesh, "alpha"));
+    for (const auto& config : modelConfigs(h))
+    {
+        expectations expect;
+        expect.needsPosition = usesDivided(config.first());
+        testModel
+        (
+            mesh, "parallel " + config.first(), config.second(), p, expect,
+            alpha
+        );
+    }
+}
+
+
+//- Not a test: wall time of compute() and average() per model for many
+//  particles (-nParticles, default 50000; radius -radius cells, 0.3)
+void timingSuite(const fvMesh& mesh, label nParticles, scalar radiusInCells)
+{
+    const boundBox bb(mesh.points(), true);
+    const scalar h = typicalCellSize(mesh);
+    Random rnd(5);
+    particleSet s;
+    for (label i = 0; i < nParticles; ++i)
+    {
+        s.add(rnd.position(bb.min(), bb.max()), radiusInCells*h);
+    }
+    particleData p(makeParticles(mesh, s));
+    p.velocity = vector(1, 0, 0);
+    volScalarField alpha(makeAlpha(mesh, "alpha"));
+    volVectorField Us
+    (
+        IOobject("Us", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedVector("zero", dimVelocity, Zero)
+    );
+    particleAveraging averaging(mesh);
+    for (const auto& config : modelConfigs(h))
+    {
+        autoPtr<voidFractionModel> model =
+            voidFractionModel::New(config.second(), mesh);
+        model->compute(p, alpha);   // first call builds search trees
+        clockTime timer;
+        model->compute(p, alpha);
+        const scalar tCompute = timer.timeIncrement();
+        averaging.average(p, model(), Us);
+        const scalar tAverage = timer.timeIncrement();
+        Info<< "timing " << config.first().c_str() << ": compute "
+            << tCompute << " s, average " << tAverage << " s for "
+            << nParticles << " particles, " << mesh.nCells() << " cells, "
+            << model->cellWeights().size() << " weight pairs" << nl;
+    }
+}
+
+
+void badInputSuite(const fvMesh& mesh)
+{
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
+
+    auto expectFailure = [&mesh]
+    (
+        const word& what,
+        const dictionary& dict,
+        const std::string& messagePart
+    )
+    {
+        bool failed = false;
+        std::string message;
+        try
+        {
+            voidFractionModel::New(dict, mesh);
+        }
+        catch (const Foam::error& e)
+        {
+            failed = true;
+            message = e.message();
+        }
+        check
+        (
+            failed && message.find(messagePart) != std::string::npos,
+            str("bad input '", what.c_str(), "' fails with a message naming \"",
+                messagePart.c_str(), "\": ", message.c_str())
+        );
+    };
+
+    {
+        dictionary coeffs;
+        expectFailure
+        (
+            "smoothed without a length", couplingDict("smoothed", coeffs),
+            "exactly one"
+        );
+    }
+    {
+        dictionary coeffs;
+        coeffs.add("smoothingLength", 0.001);
+        coeffs.add("smoothingLengthInDiameters", 2.0);
+        expectFailure
+        (
+            "smoothed with both lengths", couplingDict("smoothed", coeffs),
+            "exactly one"
+        );
+    }
+    {
+        dictionary coeffs;
+        coeffs.add("smoothingLength", -0.001);
+        expectFailure
+        (
+            "negative smoothingLength", couplingDict("smoothed", coeffs),
+            "positive"
+        );
+    }
+    {
+        dictionary coeffs;
+        coeffs.add("smoothingLength", 0.001);
+        coeffs.add("base", word("smoothed"));
+        expectFailure
+        (
+            "smoothed on smoothed", couplingDict("smoothed", coeffs),
+            "centre or divided"
+        );
+    }
+    {
+        dictionary coeffs;
+        coeffs.add("alphaMin", 1.2);
+        expectFailure
+        (
+            "alphaMin 1.2", couplingDict("divided", coeffs), "alphaMin"
+        );
+    }
+    expectFailure
+    (
+        "unknown model", couplingDict("nonsense", dictionary()), "nonsense"
+    );
+
+    // A solver sub-dictionary overrides the defaults
+    {
+        dictionary coeffs;
+        coeffs.add("smoothingLength", 0.001);
+        dictionary solver;
+        solver.add("solver", word("nonsenseSolver"));
+        coeffs.add("solver", solver);
+        particleSet one;
+        one.add(mesh.C()[0], 0.3*typicalCellSize(mesh));
+        particleData p(makeParticles(mesh, one));
+        volScalarField alpha(makeAlpha(mesh, "alpha"));
+        bool failed = false;
+        try
+        {
+            voidFractionModel::New(couplingDict("smoothed", coeffs), mesh)
+                ->compute(p, alpha);
+        }
+        catch (const Foam::error& e)
+        {
+            failed = std::string(e.message()).find("nonsenseSolver")
+                != std::string::npos;
+        }
+        check(failed, "smoothed: the 'solver' sub-dictionary is used");
+    }
+
+    FatalError.throwExceptions(false);
+    FatalIOError.throwExceptions(false);
+}
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote("Tests of the void fraction models and averaging");
+    argList::addOption("suite", "name", "box, periodic, parallel, badInput or timing");
+    argList::addOption("nParticles", "N", "timing: number of particles");
+    argList::addOption("radius", "r", "timing: radius in cell sizes");
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    const word suite(args.getOrDefault<word>("suite", "box"));
+    Info<< "Suite " << suite << ": mesh of " << mesh.nCells() << " cells"
+        << nl;
+
+    if (suite == "box")
+    {
+        boxSuite(mesh);
+    }
+    else if (suite == "periodic")
+    {
+        periodicSuite(mesh);
+    }
+    else if (suite == "parallel")
+    {
+        parallelSuite(mesh);
+    }
+    else if (suite == "timing")
+    {
+        timingSuite
+        (
+            mesh,
+            args.getOrDefault<label>("nParticles", 50000),
+            args.getOrDefault<scalar>("radius", 0.3)
+        );
+    }
+    else if (suite == "badInput")
+    {
+        badInputSuite(mesh);
+    }
+    else
+    {
+        FatalErrorInFunction
+            << "Unknown suite " << suite << exit(FatalError);
+    }
+
+    Info<< nl << "testVoidFraction " << suite << ": " << nPassed
+        << " passed, " << nFailed << " failed" << endl;
+
+    // Not 'return 1': argList's destructor ends the program with exit(0)
+    if (nFailed)
+    {
+        FatalErrorInFunction
+            << nFailed << " check(s) failed" << exit(FatalError);
+    }
+
+    return 0;
+}

@@ -1,0 +1,20 @@
+# NaN at run time, particle side: a DEM force that is NaN at step 2000 only
+# (the last DEM step of the coupling step ending at t = 0.02 s) makes the
+# sphere's velocity NaN while its position is still finite. The solver must
+# stop non-zero naming the particle id, its cell and 'velocity', write the
+# fluid fields of t = 0.019 s and a DEM restart, and nothing NaN in 0.019.
+setup()
+{
+    timing 1e-5 100 0.05 10
+    cat > DEM/extra <<'END'
+# (-1)^0.5 is NaN: only at step 2000
+variable        fnan equal (2*(step!=2000)-1)^0.5-1
+fix             nan all addforce 0 0 v_fnan
+END
+}
+run_case()
+{
+    expectFailure 60 \
+        "NaN/Inf at t = 0.02 s: particle id 1 in cell [0-9]+ of rank 0: velocity is not finite" \
+        0.019 "DEM/post/restart.atFailure_0.02"
+}

@@ -75,3 +75,21 @@ add_test(NAME workPrecision.settlingSphere
             bash -c "${FOAMDEM_ROOT}/bin/foamDEMWorkPrecision ${FOAMDEM_ROOT}/tutorials/settlingSphere -o ${FOAMDEM_WORK}/workPrecision --levels dt2e-3,dt1e-3 && test $(grep -c '^dt' ${FOAMDEM_WORK}/workPrecision/workPrecision.dat) -eq 2 && test -s ${FOAMDEM_WORK}/workPrecision/workPrecision.png")
 set_tests_properties(workPrecision.settlingSphere PROPERTIES
     LABELS "integration;workPrecision" TIMEOUT 300)
+
+# A scene with spin lift: the plan must now pull angular velocities, and the
+# lift (a coupled force) keeps the momentum balance
+add_test(NAME settlingSphere.magnusLift
+    COMMAND ${VARIANT} settlingSphere ${FOAMDEM_WORK}/settlingSphere_magnus
+            "foamDictionary ${CP} -entry forceModels -set '(schillerNaumann archimedes pressureGradient magnusLift)'"
+            -ci)
+set_tests_properties(settlingSphere.magnusLift PROPERTIES
+    LABELS "integration;tutorial" TIMEOUT 300 FIXTURES_SETUP settling_magnus)
+add_test(NAME exchangePlan.magnusLift
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkExchangePlan
+            ${FOAMDEM_WORK}/settlingSphere_magnus/log.pisoDEMFoam
+            "position velocity radius id angularVelocity implicitCoeff fluidVelocity explicitForce"
+            "orientation type density")
+add_test(NAME momentumBalance.magnusLift
+    COMMAND ${BALANCE} ${FOAMDEM_WORK}/settlingSphere_magnus/log.pisoDEMFoam 1e-10)
+set_tests_properties(exchangePlan.magnusLift momentumBalance.magnusLift PROPERTIES
+    LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_magnus)

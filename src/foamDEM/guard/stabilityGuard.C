@@ -168,7 +168,7 @@ void Foam::foamDEM::stabilityGuard::checkCellSize(scalar dMax)
           + fmt(worstRatio) + " (void fraction model " + vfType + ')'
         );
     }
-    if (worstRatio > handles)
+    if (worstRatio > handles*(1 + 1e-6))
     {
         warn
         (

@@ -1,0 +1,415 @@
+#!/usr/bin/env python3
+"""foamDEM benchmark suite (run it through bench/run, which sources etc/bashrc).
+
+Each benchmark runs with its baseline in the same invocation:
+  1. coupled throughput of the fluidBed case (particle-steps/s) and the
+     wall-time breakdown from foamDEM's timers,
+  2. the same particle system run by standalone LIGGGHTS,
+  3. the coupling share of the wall time,
+  4. DPMFoam's Goldschmidt tutorial vs. a foamDEM counterpart,
+  5. np = 2 vs np = 1 speed-up and the exchange bytes (two sizes),
+  6. peak RSS per particle and per cell beyond LIGGGHTS and OpenFOAM alone.
+Results: bench/results/<date>/table.md (+ raw.json, work/ with the runs).
+"""
+import argparse
+import datetime
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+BENCH = os.path.dirname(os.path.abspath(__file__))
+CASES = os.path.join(BENCH, "cases")
+FOAM = os.environ.get("WM_PROJECT_DIR", "")
+GOLDSCHMIDT = os.path.join(FOAM, "tutorials/lagrangian/DPMFoam/Goldschmidt")
+
+# fluidBed geometry: 60 mm square column (10 x 10 cells, an even split for
+# np = 2), 2 mm spheres on a 30 x 30 lattice
+D = 0.002
+WIDTH = 0.060
+PER_LAYER = 30 * 30
+CELL = 0.006
+DEM_DT = 5e-6
+INTERVAL = 20           # DEM steps per CFD step (deltaT 1e-4 s)
+
+
+def loadavg():
+    with open("/proc/loadavg") as f:
+        return " ".join(f.read().split()[:3])
+
+
+def say(*a):
+    print(*a, flush=True)
+
+
+def run(cmd, cwd, log):
+    """Run cmd under /usr/bin/time -v; return wall [s], peak RSS [KiB], load,
+    and the wall time of the solver's time loop (from its first 'Time = '
+    line to its 'End' line, timestamped as the output streams in)."""
+    load0 = loadavg()
+    t0 = time.time()
+    tLoop0 = tLoop1 = None
+    with open(os.path.join(cwd, log), "w") as out, \
+         open(os.path.join(cwd, log + ".time"), "w") as err:
+        proc = subprocess.Popen(["/usr/bin/time", "-v"] + cmd, cwd=cwd,
+                                env=dict(os.environ, PWD=os.path.abspath(cwd)),
+                                stdout=subprocess.PIPE, stderr=err,
+                                universal_newlines=True, bufsize=1)
+        for line in proc.stdout:
+            out.write(line)
+            if tLoop0 is None and line.startswith("Time = "):
+                tLoop0 = time.time()
+            elif line.strip() == "End":
+                tLoop1 = time.time()
+        rc = proc.wait()
+    wall = time.time() - t0
+    text = open(os.path.join(cwd, log + ".time")).read()
+    m = re.search(r"Maximum resident set size \(kbytes\): (\d+)", text)
+    rss = int(m.group(1)) if m else float("nan")
+    if rc != 0:
+        say("  FAILED (%d): %s in %s; tail of %s:" % (rc, " ".join(cmd), cwd, log))
+        say("".join(open(os.path.join(cwd, log)).readlines()[-15:]))
+        raise RuntimeError("command failed")
+    m = re.search(r"Percent of CPU this job got: (\d+)%", text)
+    cpu = sum(float(x) for x in re.findall(
+        r"(?:User|System) time \(seconds\): ([0-9.]+)", text))
+    r = {"wall": wall, "rssKiB": rss, "cpuProcess": cpu,
+         "load": load0 + " -> " + loadavg() + (", CPU %s%%" % m.group(1) if m else "")}
+    if tLoop0 is not None:
+        r["loop"] = (tLoop1 or time.time()) - tLoop0
+        ex = re.findall(r"ExecutionTime = ([0-9.eE+-]+) s",
+                        open(os.path.join(cwd, log)).read())
+        r["cpu"] = float(ex[-1]) if ex else float("nan")
+    return r
+
+
+def fill(path, subs):
+    s = open(path).read()
+    for k, v in subs.items():
+        s = s.replace("@%s@" % k, str(v))
+    open(path, "w").write(s)
+
+
+def fluidbed(work, name, nLayers, steps, np=1, refine=1, logExchange=False,
+             app="pisoDEMFoam", heightLayers=None, uIn=1.5):
+    """Set up a fluidBed run directory; returns its path and the cell count."""
+    d = os.path.join(work, name)
+    if os.path.exists(d):
+        shutil.rmtree(d)
+    shutil.copytree(os.path.join(CASES, "fluidBed"), d)
+    hl = nLayers if heightLayers is None else heightLayers
+    nz = max(10, int(math.ceil(hl * D * 2.5 / CELL)))
+    H = nz * CELL
+    nx = int(round(WIDTH / CELL)) * refine
+    fill(os.path.join(d, "system/blockMeshDict"),
+         {"W": WIDTH, "H": H, "NX": nx, "NZ": nz * refine})
+    fill(os.path.join(d, "0/U"), {"UIN": uIn})
+    fill(os.path.join(d, "constant/couplingProperties"),
+         {"LOGEXCHANGE": "true" if logExchange else "false"})
+    fill(os.path.join(d, "system/controlDict"),
+         {"APP": app, "ENDTIME": "%.10g" % (steps * DEM_DT)})
+    fill(os.path.join(d, "system/decomposeParDict"), {"NP": np})
+    with open(os.path.join(d, "DEM/setup.lig"), "w") as f:
+        f.write("# written by bench/run\n"
+                "variable W equal %g\nvariable H equal %g\n"
+                "variable nLayers equal %d\nvariable nSteps equal %d\n"
+                % (WIDTH, H, nLayers, steps))
+    run(["blockMesh"], d, "log.blockMesh")
+    if np > 1:
+        run(["decomposePar", "-force"], d, "log.decomposePar")
+    return d, nx * nx * nz * refine
+
+
+def coupled(d, np=1, log="log.pisoDEMFoam"):
+    cmd = ["pisoDEMFoam"]
+    if np > 1:
+        # Ranks yield the core while they wait: the machine is shared
+        cmd = ["mpirun", "--mca", "mpi_yield_when_idle", "1", "-np", str(np),
+               "pisoDEMFoam", "-parallel"]
+    r = run(cmd, d, log)
+    text = open(os.path.join(d, log)).read()
+    r["clock"] = r["loop"]
+    m = re.search(r"foamDEM timing \[s\]: DEM ([^,]+), coupling ([^ ]+) \(pull "
+                  r"([^,]+), locate ([^,]+), transfer ([^,]+), void fraction "
+                  r"([^,]+), forces ([^,]+), push ([^)]+)\), particle output "
+                  r"(\S+)", text)
+    keys = ["dem", "coupling", "pull", "locate", "transfer", "voidFraction",
+            "forces", "push", "output"]
+    r["timers"] = dict(zip(keys, map(float, m.groups()))) if m else {}
+    m = re.search(r"DEM steps per CFD step, (\d+) particles", text)
+    r["particles"] = int(m.group(1)) if m else 0
+    ex = re.findall(r"\[(\d+)\] foamDEM exchange: DEM particles (\d+), sent "
+                    r"(\d+), received (\d+), bytes sent (\d+)", text)
+    if ex:
+        per = {}
+        for rank, n, s, rc, b in ex:
+            per.setdefault(int(rank), []).append((int(n), int(s), int(rc), int(b)))
+        r["exchange"] = {
+            rk: {"steps": len(v),
+                 "particles": sum(x[0] for x in v) / len(v),
+                 "sent": sum(x[1] for x in v) / len(v),
+                 "received": sum(x[2] for x in v) / len(v),
+                 "bytesSent": sum(x[3] for x in v) / len(v)}
+            for rk, v in sorted(per.items())}
+    return r
+
+
+def standalone(d, log="log.standalone"):
+    r = run(["liggghts", "-in", "DEM/in.standalone", "-log", log,
+             "-screen", "screen.standalone"], d, log + ".out")
+    text = open(os.path.join(d, log)).read()
+    m = re.findall(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps "
+                   r"with (\d+) atoms", text)
+    t, p, s, n = m[-1]
+    r.update(loop=float(t), steps=int(s), particles=int(n))
+    return r
+
+
+# ---------------------------------------------------------------------------
+
+def goldschmidt(work, simTime):
+    """DPMFoam on its tutorial and foamDEM on the counterpart, same window."""
+    res = {}
+    dpm = os.path.join(work, "dpmGoldschmidt")
+    if os.path.exists(dpm):
+        shutil.rmtree(dpm)
+    shutil.copytree(GOLDSCHMIDT, dpm)
+    subprocess.check_call(["foamDictionary", "system/controlDict", "-entry",
+                           "endTime", "-set", "%g" % simTime], cwd=dpm,
+                          stdout=subprocess.DEVNULL)
+    subprocess.check_call(["foamDictionary", "system/controlDict", "-entry",
+                           "writeInterval", "-set", "1000"], cwd=dpm,
+                          stdout=subprocess.DEVNULL)
+    run(["blockMesh"], dpm, "log.blockMesh")
+    props = open(os.path.join(dpm, "constant/kinematicCloudProperties")).read()
+    res["collisionModel"] = re.search(r"\n\s*collisionModel\s+(\w+);", props).group(1)
+    res["pairModel"] = re.search(r"\n\s*pairModel\s+(\w+);", props).group(1)
+    r = run(["DPMFoam"], dpm, "log.DPMFoam")
+    text = open(os.path.join(dpm, "log.DPMFoam")).read()
+    r["clock"] = r["loop"]
+    parcels = re.findall(r"Current number of parcels\s*=\s*(\d+)", text)
+    r["parcels"] = int(parcels[-1]) if parcels else None
+    res["dpm"] = r
+
+    # foamDEM counterpart: the tutorial's mesh and particle positions
+    fd = os.path.join(work, "foamDEMGoldschmidt")
+    if os.path.exists(fd):
+        shutil.rmtree(fd)
+    shutil.copytree(os.path.join(CASES, "goldschmidt"), fd)
+    shutil.copytree(os.path.join(dpm, "constant/polyMesh"),
+                    os.path.join(fd, "constant/polyMesh"))
+    fill(os.path.join(fd, "system/controlDict"),
+         {"APP": "pisoDEMFoam", "ENDTIME": "%g" % simTime})
+    pos = re.findall(r"\(\s*([-0-9.eE+]+)\s+([-0-9.eE+]+)\s+([-0-9.eE+]+)\s*\)",
+                     open(os.path.join(dpm, "constant/kinematicCloudPositions")).read())
+    os.makedirs(os.path.join(fd, "DEM/post"), exist_ok=True)
+    with open(os.path.join(fd, "DEM/post/particles.data"), "w") as f:
+        f.write("# Goldschmidt tutorial positions (bench/run)\n\n%d atoms\n"
+                "1 atom types\n\n-0.0075 0.0075 xlo xhi\n-0.075 0.075 ylo yhi\n"
+                "0 0.45 zlo zhi\n\nAtoms\n\n" % len(pos))
+        for i, (x, y, z) in enumerate(pos):
+            f.write("%d 1 0.0025 2526 %s %s %s\n" % (i + 1, x, y, z))
+    res["foamDEM"] = coupled(fd)
+    res["positions"] = len(pos)
+    res["simTime"] = simTime
+    return res
+
+
+# ---------------------------------------------------------------------------
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--size", type=int, help="particles of the bed (default 25000, --quick 5000)")
+    ap.add_argument("--steps", type=int, help="DEM steps (default 2000, --quick 1000)")
+    ap.add_argument("--quick", action="store_true", help="small size, few steps (< 5 min)")
+    ap.add_argument("--dpm-time", type=float, help="simulated time of the Goldschmidt runs [s]")
+    ap.add_argument("--repeat", type=int, help="runs of the timed np 1 / standalone / np 2 cases, best kept (default 2, --quick 1)")
+    ap.add_argument("--only", default="", help="comma list of benchmarks 1-6 (default all)")
+    ap.add_argument("--out", help="results directory (default bench/results/<date>)")
+    a = ap.parse_args()
+    size = a.size or (5000 if a.quick else 25000)
+    steps = a.steps or (1000 if a.quick else 4000)
+    repeat = a.repeat or (1 if a.quick else 2)
+    steps = max(INTERVAL, steps // INTERVAL * INTERVAL)
+    dpmTime = a.dpm_time or (0.001 if a.quick else 0.005)
+    only = set(a.only.split(",")) if a.only else set("123456")
+    nLayers = max(1, int(round(size / PER_LAYER)))
+    stamp = datetime.datetime.now().strftime("%Y-%m-%d_%H%M%S")
+    out = a.out or os.path.join(BENCH, "results", stamp)
+    work = os.path.join(out, "work")
+    os.makedirs(work, exist_ok=True)
+
+    R = {"date": stamp, "size": nLayers * PER_LAYER, "steps": steps, "repeat": repeat,
+         "loadStart": loadavg(), "host": os.uname().nodename,
+         "nproc": os.cpu_count(), "argv": sys.argv[1:]}
+    N = R["size"]
+    say("foamDEM bench: %d particles (%d layers), %d DEM steps of %g s, load %s"
+        % (N, nLayers, steps, DEM_DT, R["loadStart"]))
+
+    best = lambda runs: min(runs, key=lambda r: r["clock"] if "clock" in r else r["loop"])
+    if only & set("12356"):
+        d, cells = fluidbed(work, "coupled_np1", nLayers, steps)
+        R["cells"] = cells
+        runs, sa = [], []
+        for k in range(repeat):
+            say("[1] coupled fluidBed, np = 1, run %d of %d ..." % (k + 1, repeat))
+            runs.append(coupled(d, log="log.pisoDEMFoam.%d" % k))
+            say("[2] standalone LIGGGHTS, same system, run %d of %d ..." % (k + 1, repeat))
+            sa.append(standalone(d, log="log.standalone.%d" % k))
+        R["coupled"], R["standalone"] = best(runs), best(sa)
+        R["coupledRuns"], R["standaloneRuns"] = runs, sa
+        # Like-for-like DEM baseline: the gas at rest, so that the particles
+        # move as in the standalone run (the coupling still runs in full)
+        say("[2] coupled fluidBed with the gas at rest ...")
+        d, _ = fluidbed(work, "coupled_still", nLayers, steps, uIn=0)
+        R["coupledStill"] = coupled(d)
+        say("[2] standalone LIGGGHTS, once more ...")
+        sa.append(standalone(os.path.join(work, "coupled_np1"), log="log.standalone.%d" % repeat))
+        R["standalone"] = best(sa)
+    if only & set("5"):
+        d, _ = fluidbed(work, "coupled_np2", nLayers, steps, np=2, logExchange=True)
+        runs = []
+        for k in range(repeat):
+            say("[5] coupled fluidBed, np = 2, run %d of %d ..." % (k + 1, repeat))
+            runs.append(coupled(d, np=2, log="log.pisoDEMFoam.%d" % k))
+        R["np2"], R["np2Runs"] = best(runs), runs
+        say("[5] coupled fluidBed, np = 2, half size ...")
+        half = max(1, nLayers // 2)
+        d, _ = fluidbed(work, "coupled_np2_half", half, steps, np=2,
+                        logExchange=True, heightLayers=nLayers)
+        R["np2half"] = coupled(d, np=2)
+        R["np2half"]["size"] = half * PER_LAYER
+    if only & set("6"):
+        say("[6] memory references ...")
+        mem = {}
+        s6 = 10 * INTERVAL
+        d, c1 = fluidbed(work, "mem_coupled0_r1", 0, s6, heightLayers=nLayers)
+        mem["coupled0_r1"] = coupled(d)
+        mem["standalone0"] = standalone(d)
+        d, c3 = fluidbed(work, "mem_coupled0_r3", 0, s6, refine=3, heightLayers=nLayers)
+        mem["coupled0_r3"] = coupled(d)
+        d, _ = fluidbed(work, "mem_piso_r1", 0, s6, app="pisoFoam", heightLayers=nLayers)
+        mem["piso_r1"] = run(["pisoFoam"], d, "log.pisoFoam")
+        d, _ = fluidbed(work, "mem_piso_r3", 0, s6, refine=3, app="pisoFoam", heightLayers=nLayers)
+        mem["piso_r3"] = run(["pisoFoam"], d, "log.pisoFoam")
+        mem["cells_r1"], mem["cells_r3"] = c1, c3
+        R["mem"] = mem
+    if only & set("4"):
+        say("[4] DPMFoam Goldschmidt vs foamDEM, %g s simulated ..." % dpmTime)
+        R["goldschmidt"] = goldschmidt(work, dpmTime)
+    R["loadEnd"] = loadavg()
+    json.dump(R, open(os.path.join(out, "raw.json"), "w"), indent=1)
+    table(R, out)
+
+
+def table(R, out):
+    rows = []
+    notes = []
+    N, steps = R["size"], R["steps"]
+    fmt = lambda x: "%.3g" % x
+    if "coupled" in R:
+        c, t = R["coupled"], R["coupled"]["timers"]
+        total = c["clock"]
+        exch = t["pull"] + t["push"] + t["transfer"]
+        share = t["locate"] + t["voidFraction"] + t["forces"] + exch
+        cfd = total - t["dem"] - t["coupling"] - t["output"]
+        thr = N * steps / total
+        rows.append(("1 coupled throughput (np 1)",
+                     "%s particle-steps/s (%d particles x %d steps / %.1f s time-loop wall); DEM %.1f s, CFD %.1f s, "
+                     "coupling %.2f s (locate %.2f, void fraction %.2f, forces %.2f, exchange %.2f)"
+                     % (fmt(thr), N, steps, total, t["dem"], cfd, t["coupling"], t["locate"],
+                        t["voidFraction"], t["forces"], exch), "-", "-", c["load"]))
+        s = R["standalone"]
+        thrS = s["particles"] * s["steps"] / s["loop"]
+        thrD = N * steps / t["dem"]
+        rows.append(("2 coupled DEM / standalone LIGGGHTS",
+                     "%.2f (DEM part %s vs standalone %s p-steps/s, %.1f s loop); total coupled / standalone %.2f"
+                     % (thrD / thrS, fmt(thrD), fmt(thrS), s["loop"], thr / thrS),
+                     ">= 0.8", "yes" if thrD / thrS >= 0.8 else "NO", s["load"]))
+        if "coupledStill" in R:
+            cs_ = R["coupledStill"]
+            thrDs = N * steps / cs_["timers"]["dem"]
+            rows.append(("2b same, gas at rest in the coupled run",
+                         "%.2f (DEM part %s p-steps/s; total coupled / standalone %.2f)"
+                         % (thrDs / thrS, fmt(thrDs), N * steps / cs_["clock"] / thrS),
+                         ">= 0.8", "yes" if thrDs / thrS >= 0.8 else "NO", cs_["load"]))
+        rows.append(("3 coupling share of wall time",
+                     "%.2f %% (%.2f s of %.1f s)" % (100 * share / total, share, total),
+                     "<= 5 %", "yes" if share / total <= 0.05 else "NO", c["load"]))
+    if "goldschmidt" in R:
+        g = R["goldschmidt"]
+        dw = g["dpm"]["clock"] / g["simTime"]
+        fw = g["foamDEM"]["clock"] / g["simTime"]
+        ft = g["foamDEM"]["timers"]
+        dc = g["dpm"]["cpu"] / g["simTime"]
+        fc = g["foamDEM"]["cpu"] / g["simTime"]
+        rows.append(("4 DPMFoam / foamDEM wall per simulated s",
+                     "%.2f (DPMFoam %.0f s, foamDEM %.0f s wall per simulated s; CPU time ratio %.2f; %g s simulated, %s parcels vs %d spheres; "
+                     "DPMFoam collision %s/%s; foamDEM DEM %.1f s of %.1f s)"
+                     % (dw / fw, dw, fw, dc / fc, g["simTime"], g["dpm"]["parcels"], g["foamDEM"]["particles"],
+                        g["collisionModel"], g["pairModel"], ft.get("dem", float("nan")),
+                        g["foamDEM"]["clock"]),
+                     ">= 10", "yes" if dw / fw >= 10 else "NO",
+                     g["dpm"]["load"] + "; " + g["foamDEM"]["load"]))
+    if "np2" in R and "coupled" in R:
+        sp = R["coupled"]["clock"] / R["np2"]["clock"]
+        ex, exh = R["np2"].get("exchange", {}), R["np2half"].get("exchange", {})
+        def exs(e):
+            return ", ".join("rank %d: %.0f particles, %.0f B/step (%.1f B/particle)"
+                             % (k, v["particles"], v["bytesSent"],
+                                v["bytesSent"] / max(v["particles"], 1)) for k, v in e.items())
+        cs = R["coupled"]["cpuProcess"] / (R["np2"]["cpuProcess"] / 2)
+        rows.append(("5 speed-up np 2 / np 1",
+                     "%.2f wall (%.1f s vs %.1f s); %.2f from CPU time (np 1 CPU s / (np 2 CPU s / 2), start-up included: "
+                     "the speed-up on 2 idle cores if waiting costs nothing); exchange %d particles: %s; %d particles: %s"
+                     % (sp, R["coupled"]["clock"], R["np2"]["clock"], cs, N, exs(ex),
+                        R["np2half"]["size"], exs(exh)),
+                     ">= 1.7", "yes" if sp >= 1.7 else "NO", R["np2"]["load"]))
+    if "mem" in R and "coupled" in R:
+        m = R["mem"]
+        dC = R["coupled"]["rssKiB"] - m["coupled0_r1"]["rssKiB"]
+        dS = R["standalone"]["rssKiB"] - m["standalone0"]["rssKiB"]
+        perP = (dC - dS) * 1024.0 / N
+        dc = m["coupled0_r3"]["rssKiB"] - m["coupled0_r1"]["rssKiB"]
+        dp = m["piso_r3"]["rssKiB"] - m["piso_r1"]["rssKiB"]
+        nc = m["cells_r3"] - m["cells_r1"]
+        perC = (dc - dp) * 1024.0 / nc
+        rows.append(("6 peak RSS beyond LIGGGHTS / OpenFOAM",
+                     "%.0f B/particle ((%d-%d) - (%d-%d) KiB over %d particles); %.0f B/cell "
+                     "((%d-%d) - pisoFoam (%d-%d) KiB over %d cells)"
+                     % (perP, R["coupled"]["rssKiB"], m["coupled0_r1"]["rssKiB"],
+                        R["standalone"]["rssKiB"], m["standalone0"]["rssKiB"], N, perC,
+                        m["coupled0_r3"]["rssKiB"], m["coupled0_r1"]["rssKiB"],
+                        m["piso_r3"]["rssKiB"], m["piso_r1"]["rssKiB"], nc),
+                     "<= 1024 B/particle, <= 2048 B/cell",
+                     "yes" if perP <= 1024 and perC <= 2048 else "NO", "-"))
+    lines = ["# foamDEM benchmarks %s" % R["date"], "",
+             "Host %s (%d cores); load (1/5/15 min) at start %s, at end %s." % (
+                 R["host"], R["nproc"], R["loadStart"], R["loadEnd"]),
+             "Command: bench/run %s; bed: %d particles, %d DEM steps of %g s; "
+             "timed runs repeated %d x, best kept." % (
+                 " ".join(R["argv"]), N, steps, DEM_DT, R.get("repeat", 1)), "",
+             "Wall times are of the solver's time loop (start-up excluded). The "
+             "load column gives the 1/5/15-min load average before -> after the run "
+             "and the share of a core the run got (CPU%).", "",
+             "| figure | measured | target | met? | load during run |",
+             "|---|---|---|---|---|"]
+    lines += ["| %s |" % " | ".join(r) for r in rows]
+    text = "\n".join(lines) + "\n"
+    open(os.path.join(out, "table.md"), "w").write(text)
+    say("")
+    say(text)
+    say("Written: %s" % os.path.join(out, "table.md"))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) > 2 and sys.argv[1] == "--table":
+        out = sys.argv[2]
+        table(json.load(open(os.path.join(out, "raw.json"))), out)
+    else:
+        main()

@@ -444,6 +444,22 @@ void Foam::foamDEM::liggghtsEngine::pull
     auto vec = [](const double* a) { return vector(a[0], a[1], a[2]); };
     const scalar pi = constant::mathematical::pi;
 
+    // LIGGGHTS maps atoms back into a periodic box only when it rebuilds
+    // its neighbour lists; the copy is wrapped so that it lies in the box
+    // (and the mesh). LIGGGHTS's own positions and image flags are left.
+    const LAMMPS_NS::Domain& box = *lmp_->domain;
+    auto wrapped = [&](const double* a)
+    {
+        vector x(a[0], a[1], a[2]);
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (!box.periodicity[d]) continue;
+            if (x[d] < box.boxlo[d]) x[d] += box.prd[d];
+            else if (x[d] >= box.boxhi[d]) x[d] -= box.prd[d];
+        }
+        return x;
+    };
+
     // Multisphere bodies
     if (nB)
     {
@@ -460,7 +476,7 @@ void Foam::foamDEM::liggghtsEngine::pull
         for (label b = 0; b < nB; ++b)
         {
             ms.xcm(a, b);
-            p.position[b] = vec(a);
+            p.position[b] = wrapped(a);
             if (plan.has(quantity::velocity))
             {
                 ms.vcm(a, b);
@@ -513,7 +529,7 @@ void Foam::foamDEM::liggghtsEngine::pull
     {
         const label i = atoms[k];
         const label j = nB + k;
-        p.position[j] = vec(atom.x[i]);
+        p.position[j] = wrapped(atom.x[i]);
         if (plan.has(quantity::velocity)) p.velocity[j] = vec(atom.v[i]);
         if (plan.has(quantity::radius)) p.radius[j] = atom.radius[i];
         if (plan.has(quantity::density))

@@ -1,0 +1,172 @@
+"""Slug statistics of periodic pneumatic conveying from LIGGGHTS output.
+
+Inputs are the files the densePneumaticConveying tutorial writes:
+  - axial profiles of 'fix ave/spatial ... x lower dx vx density/mass'
+    (one block per output step: bin, coordinate, count, mean v_x, mass per
+    bin volume);
+  - particle dumps 'id x y z vx vy vz ix' (ix: image flag along x);
+  - the flowController log (time, mean gas velocity, target, force, ...).
+
+Slug identification: axial bins whose solid fraction exceeds a threshold
+are dense; on the periodic axis the slug is the longest connected run of
+dense bins (the run may wrap around the periodic plane). Its ends are
+refined by linear interpolation of the solid fraction to the threshold
+between the last dense and the first dilute bin.
+"""
+import glob
+import os
+import re
+
+import numpy as np
+
+
+def read_axial(path):
+    """Blocks of a fix ave/spatial file -> (steps[nt], coord[nb],
+    count[nt, nb], vx[nt, nb], rho[nt, nb])."""
+    steps, counts, vxs, rhos = [], [], [], []
+    coord = None
+    with open(path) as f:
+        lines = [l for l in f if not l.startswith("#")]
+    i = 0
+    while i < len(lines):
+        head = lines[i].split()
+        if not head:
+            i += 1
+            continue
+        step, nb = int(head[0]), int(head[1])
+        block = np.array([[float(x) for x in l.split()] for l in lines[i + 1:i + 1 + nb]])
+        i += 1 + nb
+        if block.shape[0] != nb:
+            break  # incomplete last block of a running simulation
+        coord = block[:, 1]
+        steps.append(step)
+        counts.append(block[:, 2])
+        vxs.append(block[:, 3])
+        rhos.append(block[:, 4])
+    if coord is None:
+        raise ValueError("%s: no complete block" % path)
+    return (np.array(steps), coord, np.array(counts), np.array(vxs), np.array(rhos))
+
+
+def read_segments(pattern, reader):
+    """Concatenate the outputs of a run and its continuations (one file per
+    segment, named by its first DEM step); a later segment replaces what an
+    earlier one wrote from its first step on."""
+    files = glob.glob(pattern)
+    key = lambda f: int(re.findall(r"_(\d+)\.dat$", f)[0])
+    files.sort(key=key)
+    parts = [reader(f) for f in files]
+    return files, parts
+
+
+def longest_circular_run(mask):
+    """(start, length) of the longest run of True in a circular boolean
+    array; (-1, 0) if none, (0, n) if all True."""
+    n = len(mask)
+    if not mask.any():
+        return -1, 0
+    if mask.all():
+        return 0, n
+    # Start scanning just after a False so that runs do not wrap the scan
+    k0 = int(np.argmin(mask)) + 1
+    best, best_start, run, run_start = 0, -1, 0, None
+    for j in range(n):
+        k = (k0 + j) % n
+        if mask[k]:
+            if run == 0:
+                run_start = k
+            run += 1
+            if run > best:
+                best, best_start = run, run_start
+        else:
+            run = 0
+    return best_start, best
+
+
+def slug_in_profile(phi, coord, dx, threshold):
+    """The slug of one axial solid-fraction profile on a periodic axis.
+
+    Returns dict(rear, front, length, bins) with rear/front the upstream and
+    downstream ends (x, front unwrapped to be >= rear), or None if no bin is
+    dense (or all are: no slug)."""
+    n = len(phi)
+    dense = phi > threshold
+    start, length = longest_circular_run(dense)
+    if length == 0 or length == n:
+        return None
+    last = (start + length - 1) % n
+    before = (start - 1) % n
+    after = (last + 1) % n
+
+    def frac(inside, outside):
+        # Fraction of the way from a dense bin centre to the dilute one
+        # where phi falls to the threshold
+        a, b = phi[inside], phi[outside]
+        return float(np.clip((a - threshold) / max(a - b, 1e-12), 0, 1))
+
+    rear = coord[start] - dx * frac(start, before)
+    front = coord[start] + dx * (length - 1) + dx * frac(last, after)
+    bins = [(start + j) % n for j in range(length)]
+    return {"rear": rear, "front": front, "length": front - rear, "bins": bins}
+
+
+def unwrap(x, period):
+    """Unwrap a periodic position history."""
+    x = np.asarray(x, dtype=float)
+    out = x.copy()
+    for i in range(1, len(x)):
+        d = x[i] - x[i - 1]
+        out[i] = out[i - 1] + d - period * np.round(d / period)
+    return out
+
+
+def read_dump(path):
+    """A LIGGGHTS text dump 'id x y z vx vy vz ix' -> (step, array sorted
+    by id)."""
+    with open(path) as f:
+        f.readline()
+        step = int(f.readline())
+        f.readline()
+        n = int(f.readline())
+    data = np.loadtxt(path, skiprows=9, ndmin=2)
+    if data.shape[0] != n:
+        raise ValueError("%s: %d atoms listed, %d read" % (path, n, data.shape[0]))
+    return step, data[np.argsort(data[:, 0])]
+
+
+def periodic_crossings(dump_files):
+    """Crossings of the periodic plane between consecutive dumps, from the
+    image flags: (total crossings, particles that crossed, ids equal in all
+    dumps?, particle counts)."""
+    files = sorted(dump_files, key=lambda f: int(re.findall(r"\.(\d+)\.txt$", f)[0]))
+    total, crossed, same_ids, counts = 0, set(), True, []
+    prev = None
+    for f in files:
+        _, d = read_dump(f)
+        counts.append(d.shape[0])
+        if prev is not None:
+            if d.shape[0] != prev.shape[0] or (d[:, 0] != prev[:, 0]).any():
+                same_ids = False
+            else:
+                dix = d[:, 7] - prev[:, 7]
+                total += int(np.abs(dix).sum())
+                crossed |= set(d[dix != 0, 0].astype(int))
+        prev = d
+    return total, len(crossed), same_ids, counts
+
+
+def read_controller(case):
+    """flowController logs of all run segments, concatenated by time:
+    columns time, Umean, Ubar, force[m/s^2], force[N/m^3], r, updated."""
+    rows = []
+    for f in glob.glob(os.path.join(case, "postProcessing", "*", "*", "flowController.dat")):
+        d = np.loadtxt(f, ndmin=2)
+        if d.size:
+            rows.append(d)
+    if not rows:
+        raise ValueError("%s: no flowController.dat" % case)
+    d = np.vstack(rows)
+    d = d[np.argsort(d[:, 0], kind="stable")]
+    # Keep the last entry of each time (a continuation overrides)
+    _, idx = np.unique(d[::-1, 0], return_index=True)
+    return d[::-1][idx]

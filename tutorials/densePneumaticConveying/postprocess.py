@@ -1,0 +1,244 @@
+#!/usr/bin/python3
+"""densePneumaticConveying post-processing.
+
+Reads the DEM statistics (DEM/post/axial_*.dat, history_*.dat, dumps), the
+flow controller's log (postProcessing/driveGas/*/flowController.dat) and the
+solver logs, and writes
+  results/summary.dat     quasi-steady averages and standard deviations of
+                          the gas velocity, slug velocity, in-slug particle
+                          velocity, solids mass flow rate and slug length,
+                          and the mechanics checks;
+  results/timeSeries.png  the same quantities and the controller force
+                          against time;
+  results/slugMap.png     axial solid fraction against x and t.
+
+Slug: axial bins (binWidth) whose solid fraction exceeds slugThreshold; the
+slug is the longest connected run of such bins on the periodic axis
+(foamdem.slug). Its velocity is the rate of change of its unwrapped centre
+(mid-point of its ends), from a local linear fit over +-smoothTime; the
+in-slug particle velocity is the mean v_x of the particles in the slug's
+bins; the solids mass flow rate is sum(m v_x)/L (the mean over the pipe of
+the flow through a section).
+
+Checks (exit status 1 if one fails; --ci also applies them, the full run
+reports them): no particle lost (count constant, the same ids in every
+dump), particles crossed the periodic plane (image flags between dumps),
+every particle located in the CFD mesh at every coupling step (no 'not
+found in the CFD mesh' warning in the solver logs), and the controller
+holds the target within 2 % after its transient.
+"""
+import argparse
+import glob
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.environ.get("FOAMDEM_DIR", "../.."), "python"))
+from foamdem import caseio, slug  # noqa: E402
+
+TRANSIENT = 0.02        # controller transient excluded from its check [s]
+TOLERANCE = 0.02        # relative error allowed of the mean gas velocity
+SMOOTH_TIME = 0.025     # half-width of the slug velocity fit [s]
+
+
+def concat_history(case):
+    rows = []
+    for f in glob.glob(os.path.join(case, "DEM/post/history_*.dat")):
+        d = np.loadtxt(f, ndmin=2)
+        if d.size:
+            rows.append(d)
+    if not rows:
+        raise ValueError("no DEM/post/history_*.dat")
+    d = np.vstack(rows)
+    _, idx = np.unique(d[::-1, 0], return_index=True)
+    return d[::-1][idx]
+
+
+def concat_axial(case, dt):
+    files, parts = slug.read_segments(os.path.join(case, "DEM/post/axial_*.dat"),
+                                      slug.read_axial)
+    if not parts:
+        raise ValueError("no DEM/post/axial_*.dat")
+    coord = parts[0][1]
+    steps = np.concatenate([p[0] for p in parts])
+    count = np.vstack([p[2] for p in parts])
+    vx = np.vstack([p[3] for p in parts])
+    rho = np.vstack([p[4] for p in parts])
+    _, idx = np.unique(steps[::-1], return_index=True)
+    sel = (len(steps) - 1 - idx)
+    return steps[sel] * dt, coord, count[sel], vx[sel], rho[sel]
+
+
+def local_slope(t, x, half_width):
+    """dx/dt from a linear fit over t +- half_width."""
+    v = np.full(len(t), np.nan)
+    for i in range(len(t)):
+        m = np.abs(t - t[i]) <= half_width + 1e-12
+        if m.sum() >= 3:
+            v[i] = np.polyfit(t[m], x[m], 1)[0]
+    return v
+
+
+def stats(values, mask):
+    v = np.asarray(values)[mask]
+    v = v[np.isfinite(v)]
+    if v.size == 0:
+        return np.nan, np.nan
+    return float(v.mean()), float(v.std())
+
+
+def solver_logs(case):
+    return sorted(glob.glob(os.path.join(case, "log.pisoDEMFoam*")))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--case", default=".")
+    ap.add_argument("--ci", action="store_true", help="CI variant: window after the transient")
+    ap.add_argument("--no-plot", action="store_true")
+    args = ap.parse_args()
+    case = args.case
+
+    par = caseio.liggghts_variables(os.path.join(case, "DEM/parameters"))
+    setup = caseio.liggghts_variables(os.path.join(case, "DEM/post/setup.lig"))
+    L = setup["xhi"] - setup["xlo"]
+    R = setup["pipeRadius"]
+    box_area = (setup["boxHi"] - setup["boxLo"]) ** 2
+    pipe_area = np.pi * R * R
+    rhop = par["rhop"]
+    dx = par["binWidth"]
+    threshold = par["slugThreshold"]
+    ubar = par["gasVelocity"]
+
+    hist = concat_history(case)
+    t_h, n_h, mvx_h = hist[:, 0], hist[:, 1], hist[:, 2]
+    t_a, coord, count, vx, rho = concat_axial(case, par["demTimestep"])
+    phi = rho * box_area / (rhop * pipe_area)
+    ctrl = slug.read_controller(case)
+    t_c, u_c, f_c = ctrl[:, 0], ctrl[:, 1], ctrl[:, 4]
+
+    # Slug per axial snapshot
+    rear, front, length, v_part = (np.full(len(t_a), np.nan) for _ in range(4))
+    for i in range(len(t_a)):
+        s = slug.slug_in_profile(phi[i], coord, dx, threshold)
+        if s is None:
+            continue
+        rear[i], front[i], length[i] = s["rear"], s["front"], s["length"]
+        b = s["bins"]
+        v_part[i] = np.sum(count[i, b] * vx[i, b]) / max(np.sum(count[i, b]), 1)
+    have = np.isfinite(length)
+    centre = np.full(len(t_a), np.nan)
+    v_slug = np.full(len(t_a), np.nan)
+    if have.sum() >= 3:
+        centre[have] = slug.unwrap(0.5 * (rear[have] + front[have]), L)
+        v_slug[have] = local_slope(t_a[have], centre[have], SMOOTH_TIME)
+    mdot = mvx_h / L
+
+    # Quasi-steady window
+    t_end = max(t_h[-1], t_c[-1])
+    if args.ci:
+        t0 = TRANSIENT
+    else:
+        t0 = max(t_end - par["quasiSteadyTime"], TRANSIENT)
+    w_c, w_a, w_h = t_c >= t0, t_a >= t0, t_h >= t0
+
+    table = [
+        ("gasVelocity", "m/s", stats(u_c, w_c)),
+        ("slugVelocity", "m/s", stats(v_slug, w_a)),
+        ("particleVelocityInSlug", "m/s", stats(v_part, w_a)),
+        ("solidsMassFlowRate", "kg/s", stats(mdot, w_h)),
+        ("slugLength", "m", stats(length, w_a)),
+        ("controllerForce", "N/m^3", stats(f_c, w_c)),
+    ]
+
+    # Checks
+    n0 = int(n_h[0])
+    dumps = glob.glob(os.path.join(case, "DEM/post/dump/particles.*.txt"))
+    crossings, n_crossed, same_ids, dump_counts = slug.periodic_crossings(dumps)
+    lost = int(n0 - n_h.min()) if len(n_h) else -1
+    ids_ok = same_ids and all(c == n0 for c in dump_counts)
+    not_found = 0
+    for f in solver_logs(case):
+        not_found += open(f, errors="replace").read().count("not found in the CFD mesh")
+    after = t_c >= TRANSIENT
+    err = float(np.max(np.abs(u_c[after] / ubar - 1))) if after.any() else np.nan
+    checks = [
+        ("noParticleLost", lost == 0 and ids_ok,
+         "%d particles, %d lost, same ids in all %d dumps: %s"
+         % (n0, lost, len(dump_counts), "yes" if ids_ok else "no")),
+        ("periodicCrossing", crossings > 0,
+         "%d crossings by %d particles (image flags between %d dumps)"
+         % (crossings, n_crossed, len(dump_counts))),
+        ("allLocated", not_found == 0,
+         "%d coupling steps with particles not found in the CFD mesh" % not_found),
+        ("controllerHoldsTarget", np.isfinite(err) and err <= TOLERANCE,
+         "max |Umean/Ubar - 1| after %.3g s = %.4g (allowed %.3g)"
+         % (TRANSIENT, err, TOLERANCE)),
+    ]
+
+    os.makedirs(os.path.join(case, "results"), exist_ok=True)
+    with open(os.path.join(case, "results/summary.dat"), "w") as f:
+        f.write("# densePneumaticConveying%s: %d particles, pipe %.4g m, t = %.4g..%.4g s"
+                " (window)\n" % (" CI" if args.ci else "", n0, L, t0, t_end))
+        f.write("# slug: axial bins of %.4g m with solid fraction > %.3g, longest"
+                " periodic run\n" % (dx, threshold))
+        f.write("# quantity unit mean std\n")
+        for name, unit, (m, s) in table:
+            f.write("%-24s %-6s %12.6g %12.6g\n" % (name, unit, m, s))
+        f.write("# checks\n")
+        for name, ok, text in checks:
+            f.write("%-24s %-4s %s\n" % (name, "PASS" if ok else "FAIL", text))
+    print(open(os.path.join(case, "results/summary.dat")).read())
+
+    if not args.no_plot:
+        plot(case, t_c, u_c, f_c, ubar, t_a, v_slug, v_part, length, t_h, mdot,
+             coord, phi, t0)
+
+    return 0 if all(ok for _, ok, _ in checks) else 1
+
+
+def plot(case, t_c, u_c, f_c, ubar, t_a, v_slug, v_part, length, t_h, mdot, coord, phi, t0):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(5, 1, figsize=(8, 12), sharex=True)
+    ax[0].plot(t_c, u_c, lw=0.8, label="mean gas velocity (void-fraction weighted)")
+    ax[0].axhline(ubar, color="k", ls="--", lw=0.8, label="target")
+    ax[0].set_ylabel("m/s")
+    ax[0].legend(loc="best", fontsize=8)
+    ax[1].plot(t_c, f_c, lw=0.8, color="C3")
+    ax[1].set_ylabel("controller force\nN/m$^3$")
+    ax[2].plot(t_a, v_slug, lw=0.8, label="slug")
+    ax[2].plot(t_a, v_part, lw=0.8, label="particles in slug")
+    ax[2].set_ylabel("velocity m/s")
+    ax[2].legend(loc="best", fontsize=8)
+    ax[3].plot(t_h, mdot, lw=0.8, color="C2")
+    ax[3].set_ylabel("solids mass\nflow rate kg/s")
+    ax[4].plot(t_a, length, lw=0.8, color="C4")
+    ax[4].set_ylabel("slug length m")
+    ax[4].set_xlabel("t (s)")
+    for a in ax:
+        a.axvline(t0, color="grey", lw=0.6, ls=":")
+        a.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(case, "results/timeSeries.png"), dpi=120)
+    plt.close(fig)
+
+    fig, a = plt.subplots(figsize=(8, 4))
+    dx = coord[1] - coord[0] if len(coord) > 1 else 1
+    extent = [coord[0] - dx / 2, coord[-1] + dx / 2, t_a[0], t_a[-1]]
+    im = a.imshow(phi, aspect="auto", origin="lower", extent=extent,
+                  vmin=0, vmax=0.65, cmap="viridis")
+    fig.colorbar(im, ax=a, label="solid fraction")
+    a.set_xlabel("x (m)")
+    a.set_ylabel("t (s)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(case, "results/slugMap.png"), dpi=120)
+    plt.close(fig)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,195 @@
+#!/usr/bin/python3
+"""densePneumaticConveying set-up: derive the pipe, the slug shape, the
+packing and the coupled run's output intervals from DEM/parameters and write
+DEM/post/setup.lig (LIGGGHTS variables) and DEM/post/setupDict (blockMesh,
+controlDict, fvOptions entries).
+
+--ci        the CI variant (ci* values of DEM/parameters)
+--continue  resume the coupled run: start from the latest time that has both
+            OpenFOAM fields and a DEM restart (DEM/post/restart)
+"""
+import argparse
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.environ.get("FOAMDEM_DIR", "../.."), "python"))
+from foamdem import caseio  # noqa: E402
+
+
+def shape_volume(R, r, L, core, angle, layer_top, n=400):
+    """Volume of the slug shape: the disc of radius R - r (r = 0: the bulk
+    volume), between the two face planes or below layer_top, over the
+    periodic length L (midpoint quadrature in y and x, chords in z)."""
+    rc = R - r
+    tan = math.tan(math.radians(angle))
+    vol = 0.0
+    dy = 2 * rc / n
+    xs = [-L / 2 + (i + 0.5) * L / n for i in range(n)]
+    dx = L / n
+    for j in range(n):
+        y = -rc + (j + 0.5) * dy
+        chord = 2 * math.sqrt(max(rc * rc - y * y, 0.0))
+        for x in xs:
+            in_body = (abs(x) - core / 2) * tan <= R - y
+            if in_body or y <= layer_top:
+                vol += chord * dx * dy
+    return vol
+
+
+def write_face_stl(path, name, x_top, x_bottom, y_top, y_bottom, half_width):
+    """A planar rectangle (two triangles) from the line x = x_top, y = y_top
+    to the line x = x_bottom, y = y_bottom, across z in +-half_width: a
+    temporary wall along one slug face for the packing stage."""
+    w = half_width
+    a = (x_top, y_top, -w)
+    b = (x_top, y_top, w)
+    c = (x_bottom, y_bottom, w)
+    d = (x_bottom, y_bottom, -w)
+    with open(path, "w") as f:
+        f.write("solid %s\n" % name)
+        for tri in ((a, b, c), (a, c, d)):
+            f.write("  facet normal 0 0 0\n    outer loop\n")
+            for v in tri:
+                f.write("      vertex %.9g %.9g %.9g\n" % v)
+            f.write("    endloop\n  endfacet\n")
+        f.write("endsolid %s\n" % name)
+
+
+def latest_restart(case, dt_dem):
+    """(time name, DEM step) of the latest write with a DEM restart."""
+    tdir = case
+    if os.path.isdir(os.path.join(case, "processor0")):
+        tdir = os.path.join(case, "processor0")
+    for name in reversed(caseio.time_dirs(tdir)):
+        t = float(name)
+        if t <= 0:
+            continue
+        step = int(round(t / dt_dem))
+        f = os.path.join(case, "DEM/post/restart/coupled.%d.restart" % step)
+        if os.path.isfile(f):
+            return name, step
+    return None, None
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--case", default=".")
+    ap.add_argument("--ci", action="store_true")
+    ap.add_argument("--continue", dest="cont", action="store_true")
+    args = ap.parse_args()
+    case = args.case
+
+    par = caseio.liggghts_variables(os.path.join(case, "DEM/parameters"))
+
+    def p(name):
+        ci_name = "ci" + name[0].upper() + name[1:]
+        return par[ci_name] if args.ci and ci_name in par else par[name]
+
+    R = par["pipeDiameter"] / 2
+    r = par["dp"] / 2
+    L = p("pipeLength")
+    core = p("coreLength")
+    angle = par["faceAngle"]
+    layer_top = -R + par["layerHeight"]
+    tan = math.tan(math.radians(angle))
+    slug_span = core + 2 * (R - layer_top) / tan
+    if slug_span >= L:
+        sys.exit("prepare.py: the slug (core %.4g m + faces = %.4g m) does not fit"
+                 " in the periodic length %.4g m" % (core, slug_span, L))
+    nx = int(round(L / par["cellLength"]))
+    if abs(nx * par["cellLength"] - L) > 1e-9:
+        sys.exit("prepare.py: pipeLength must be a multiple of cellLength")
+
+    dt_pack = par["packTimestep"]
+    dt_dem = par["demTimestep"]
+
+    def steps(interval, dt):
+        n = int(round(interval / dt))
+        if abs(n * dt - interval) > 1e-9 * interval:
+            sys.exit("prepare.py: %g s is not a whole number of DEM steps of %g s"
+                     % (interval, dt))
+        return n
+
+    v_shape = shape_volume(R, 0.0, L, core, angle, layer_top)
+    vp = math.pi / 6 * par["dp"] ** 3
+    s = math.radians(angle)
+
+    lig = {
+        "pipeRadius": R,
+        "xlo": -L / 2, "xhi": L / 2,
+        "boxLo": -(R + 0.002), "boxHi": R + 0.002,
+        "frontX": core / 2, "frontNx": -math.sin(s), "frontNy": -math.cos(s),
+        "rearX": -core / 2, "rearNx": math.sin(s), "rearNy": -math.cos(s),
+        "layerTop": layer_top,
+        # Insertion target above what a random packing holds: every fill
+        # period inserts into whatever room is left
+        "nFill": int(math.ceil(0.7 * v_shape / vp)),
+        "fillEvery": steps(par["fillPeriod"], dt_pack),
+        "fillSteps": steps(p("fillTime"), dt_pack),
+        "settleSteps": steps(p("settleTime"), dt_pack),
+        "statSteps": steps(par["statInterval"], dt_dem),
+        "dumpSteps": steps(p("dumpInterval"), dt_dem),
+        "writeSteps": steps(p("writeInterval"), dt_dem),
+        # CI: slug centred on the periodic plane, every particle kept
+        "shiftX": L / 2 if args.ci else 0.0,
+    }
+    if args.ci:
+        lig["nParticles"] = 1000000000
+
+    start_time = "0"
+    if args.cont:
+        start_time, step = latest_restart(case, dt_dem)
+        if start_time is None:
+            sys.exit("prepare.py --continue: no time directory with a matching"
+                     " DEM restart (DEM/post/restart/coupled.<step>.restart)")
+        restart = "DEM/post/restart/coupled.%d.restart" % step
+        fresh, segment = 0, str(step)
+    else:
+        restart = "DEM/post/packed.restart"
+        fresh, segment = 1, "0"
+
+    post = os.path.join(case, "DEM", "post")
+    for d in (post, os.path.join(post, "dump"), os.path.join(post, "restart")):
+        os.makedirs(d, exist_ok=True)
+    with open(os.path.join(post, "setup.lig"), "w") as f:
+        f.write("# Generated by Allrun (prepare.py) from DEM/parameters; do not edit\n")
+        for k, v in lig.items():
+            f.write("variable %-14s equal %.12g\n" % (k, v))
+        f.write("variable %-14s equal %d\n" % ("fresh", fresh))
+        f.write("variable %-14s string %s\n" % ("restartFile", restart))
+        f.write("variable %-14s string %s\n" % ("segment", segment))
+
+    # Temporary walls along the two faces, from the pipe top down to the
+    # layer, for the fill of the packing stage
+    span = (R - layer_top) / tan
+    write_face_stl(os.path.join(post, "faceFront.stl"), "faceFront",
+                   core / 2, core / 2 + span, R, layer_top, R)
+    write_face_stl(os.path.join(post, "faceRear.stl"), "faceRear",
+                   -core / 2, -core / 2 - span, R, layer_top, R)
+
+    with open(os.path.join(post, "setupDict"), "w") as f:
+        f.write("// Generated by Allrun (prepare.py) from DEM/parameters; do not edit\n")
+        geo = {"xlo": -L / 2, "xhi": L / 2, "R": R, "mR": -R, "s": R / 2,
+               "ms": -R / 2, "c": R / math.sqrt(2), "mc": -R / math.sqrt(2)}
+        for k, v in geo.items():
+            f.write("%-14s %.12g;\n" % (k, v))
+        f.write("%-14s %d;\n" % ("nSquare", int(par["nSquare"])))
+        f.write("%-14s %d;\n" % ("nRadial", int(par["nRadial"])))
+        f.write("%-14s %d;\n" % ("nx", nx))
+        f.write("%-14s %s;\n" % ("startTime", start_time))
+        f.write("%-14s %.12g;\n" % ("endTime", p("endTime")))
+        f.write("%-14s %.12g;\n" % ("writeInterval", p("writeInterval")))
+        f.write("%-14s %.12g;\n" % ("gasVelocity", par["gasVelocity"]))
+
+    print("densePneumaticConveying%s: pipe %.4g m x D %.4g m (%d cells along x),"
+          " slug core %.4g m, span %.4g m, shape volume %.4g m^3 (%.0f particles"
+          " at solid fraction 0.585), start %s%s"
+          % (" (CI)" if args.ci else "", L, 2 * R, nx, core, slug_span, v_shape,
+             0.585 * v_shape / vp, start_time,
+             " (continued)" if args.cont else ""))
+
+
+if __name__ == "__main__":
+    main()

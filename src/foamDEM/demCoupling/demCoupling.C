@@ -37,6 +37,20 @@ namespace
         }
     };
 
+    //- The lowest rank's non-empty message, on every rank (collective)
+    Foam::string firstMessageOverRanks(const Foam::string& local)
+    {
+        Foam::List<Foam::string> all(Foam::Pstream::nProcs());
+        all[Foam::Pstream::myProcNo()] = local;
+        Foam::Pstream::gatherList(all);
+        Foam::Pstream::scatterList(all);
+        for (const Foam::string& s : all)
+        {
+            if (s.size()) return s;
+        }
+        return Foam::string();
+    }
+
     Foam::scalar readFluidProperty
     (
         const Foam::dictionary& dict,
@@ -245,22 +259,12 @@ void Foam::foamDEM::demCoupling::checkParticlesFinite()
     }
 
     // The first rank with a bad particle reports it; all ranks stop
-    label reporter = found.empty() ? labelMax : Pstream::myProcNo();
-    reduce(reporter, minOp<label>());
-    if (reporter == labelMax) return;
+    if (!returnReduce(found.size() > 0, orOp<bool>())) return;
 
-    if (Pstream::parRun())
-    {
-        // scatter sends the master's string; fetch the reporter's instead
-        List<string> all(Pstream::nProcs());
-        all[Pstream::myProcNo()] = found;
-        Pstream::gatherList(all);
-        Pstream::scatterList(all);
-        found = all[reporter];
-    }
     stopWithLastGoodState
     (
-        "NaN/Inf at t = " + mesh_.time().timeName() + " s: " + found + '.'
+        "NaN/Inf at t = " + mesh_.time().timeName() + " s: "
+      + firstMessageOverRanks(found) + '.'
     );
 }
 
@@ -280,23 +284,17 @@ void Foam::foamDEM::demCoupling::checkFluidFinite
     }
     if (!returnReduce(badCell >= 0, orOp<bool>())) return;
 
-    List<string> all(Pstream::nProcs());
+    string where;
     if (badCell >= 0)
     {
-        all[Pstream::myProcNo()] =
+        where =
             what + " in cell " + Foam::name(badCell) + " (centre "
           + Foam::name(mesh_.C()[badCell].x()) + ' '
           + Foam::name(mesh_.C()[badCell].y()) + ' '
           + Foam::name(mesh_.C()[badCell].z()) + ") of rank "
           + Foam::name(Pstream::myProcNo());
     }
-    Pstream::gatherList(all);
-    Pstream::scatterList(all);
-    string where;
-    for (const string& s : all)
-    {
-        if (s.size()) { where = s; break; }
-    }
+    where = firstMessageOverRanks(where);
 
     // Back to the last good step
     U == U.oldTime();
@@ -656,12 +654,6 @@ Foam::foamDEM::demCoupling::momentumSource(volVectorField& U) const
       + KByRho*Us_
       + fExplicit_/rho
     );
-}
-
-
-Foam::vector Foam::foamDEM::demCoupling::totalParticleForce() const
-{
-    return returnReduce(sum(particles_.fluidForce), sumOp<vector>());
 }
 
 

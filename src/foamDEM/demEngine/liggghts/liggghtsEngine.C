@@ -690,9 +690,3 @@ void Foam::foamDEM::liggghtsEngine::writeRestart(const fileName& file)
     mkDir(file.path());
     run("write_restart " + file, "writing the DEM restart " + file);
 }
-
-
-void Foam::foamDEM::liggghtsEngine::command(const string& cmd)
-{
-    run(cmd, "running a DEM command from the case");
-}

@@ -69,3 +69,26 @@ def scalar_field_values(path):
     if not m:
         raise ValueError("%s: cannot read internalField" % path)
     return [float(x) for x in m.group(2).split()]
+
+
+def write_summary(case, rows):
+    """Write (key, value) rows to <case>/results/summary.dat, one per line,
+    and print them."""
+    os.makedirs(os.path.join(case, "results"), exist_ok=True)
+    width = max([20] + [len(k) + 1 for k, _ in rows])
+    lines = ["%-*s %s" % (width, k, v) for k, v in rows]
+    with open(os.path.join(case, "results", "summary.dat"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+def read_summary(case):
+    """The key -> value (string) entries of <case>/results/summary.dat as
+    written by write_summary; comment lines are skipped."""
+    entries = {}
+    with open(os.path.join(case, "results", "summary.dat")) as f:
+        for line in f:
+            parts = line.split(None, 1)
+            if len(parts) == 2 and not line.startswith("#"):
+                entries[parts[0]] = parts[1].strip()
+    return entries

@@ -184,11 +184,7 @@ def main():
             "yes" if c else "no" for c in (ok_count, ok_eps, ok_dp, ok_umf))),
         ("pass", "yes" if passed else "no"),
     ]
-    with open(os.path.join(case, "results/summary.dat"), "w") as f:
-        for k, v in rows:
-            f.write("%-24s %s\n" % (k, v))
-    for k, v in rows:
-        print("%-24s %s" % (k, v))
+    caseio.write_summary(case, rows)
 
     if not args.no_plot:
         import matplotlib

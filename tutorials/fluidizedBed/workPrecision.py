@@ -7,6 +7,10 @@ Levels change the CFD step with the coupling interval (the DEM step stays
 2.5e-5 s).
 """
 import os
+import sys
+
+sys.path.insert(0, os.path.join(os.environ.get("FOAMDEM_DIR", "../.."), "python"))
+from foamdem import caseio  # noqa: E402
 
 QUANTITY = "U_mf [m/s]"
 ALLRUN_ARGS = ["-ci"]
@@ -27,10 +31,5 @@ LEVELS = [
 
 
 def measure(case_dir):
-    summary = {}
-    with open(os.path.join(case_dir, "results", "summary.dat")) as f:
-        for line in f:
-            parts = line.split()
-            if len(parts) >= 2 and not line.startswith("#"):
-                summary[parts[0]] = parts[1]
+    summary = caseio.read_summary(case_dir)
     return float(summary["Umf_decreasing_m_s"]), float(summary["Umf_Ergun_m_s"])

@@ -267,11 +267,7 @@ def main():
         rows.append(("broadsideReached", "yes" if abs(tilt_end - 90) < 5 else "no"))
     rows += [("check: " + name, "ok" if c else "FAILED") for name, c in checks]
     rows.append(("pass", "yes" if ok else "no"))
-    with open(os.path.join(case, "results/summary.dat"), "w") as f:
-        for k, v in rows:
-            f.write("%-34s %s\n" % (k, v))
-    for k, v in rows:
-        print("%-34s %s" % (k, v))
+    caseio.write_summary(case, rows)
 
     if not args.no_plot:
         import matplotlib

@@ -54,7 +54,6 @@ def main():
     err_history = np.max(np.abs(v_dem - v_ode_at_dem)) / v_t
     re_t = rho * v_t * d / mu
 
-    os.makedirs(os.path.join(case, "results"), exist_ok=True)
     rows = [
         ("dragLaw", law_name),
         ("d_m", "%g" % d),
@@ -69,11 +68,7 @@ def main():
         ("tolerance", "%g" % args.tol),
         ("pass", "yes" if err_terminal <= args.tol else "no"),
     ]
-    with open(os.path.join(case, "results/summary.dat"), "w") as f:
-        for k, v in rows:
-            f.write("%-20s %s\n" % (k, v))
-    for k, v in rows:
-        print("%-20s %s" % (k, v))
+    caseio.write_summary(case, rows)
 
     if not args.no_plot:
         import matplotlib

@@ -38,9 +38,5 @@ LEVELS = [
 
 
 def measure(case_dir):
-    summary = {}
-    with open(os.path.join(case_dir, "results", "summary.dat")) as f:
-        for line in f:
-            key, value = line.split(None, 1)
-            summary[key] = value.strip()
+    summary = caseio.read_summary(case_dir)
     return float(summary["v_DEM_end_m_s"]), float(summary["v_terminal_ODE_m_s"])

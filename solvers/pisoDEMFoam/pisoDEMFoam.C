@@ -68,10 +68,21 @@ int main(int argc, char *argv[])
 
         coupling.evolve();
 
+        // Optionally, the time derivative's old velocity rebuilt from the
+        // superficial face fluxes, so that cell and face velocities cannot
+        // drift apart next to a packed bed (doc/models.md, pressure scheme)
+        if (reconstructOldVelocity)
+        {
+            volVectorField& U0 = U.oldTime();
+            U0.primitiveFieldRef() =
+                fvc::reconstruct(alphaPhi)().primitiveField()
+               /alpha.oldTime().primitiveField();
+            U0.correctBoundaryConditions();
+        }
+
         alphaf = fvc::interpolate(alpha);
         alphaPhi = alphaf*phi;
         const volScalarField pWeight(coupling.pressureWeight());
-        const surfaceScalarField pWeightf(fvc::interpolate(pWeight));
 
         #include "UEqn.H"
 

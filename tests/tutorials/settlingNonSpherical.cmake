@@ -15,9 +15,10 @@ foreach(shape rod plate)
     endforeach()
 endforeach()
 
-# Free rotation from 45 deg: the angle history is reported (foamDEM has no
-# hydrodynamic torque, so the body keeps its orientation); the terminal
-# velocity at the measured orientation is checked the same way
+# Free rotation from 45 deg with the pitching torque (pitchingTorque,
+# Zastawny et al. 2012): the rod must end within 3 deg of broadside-on and
+# the exchange plan must list 'torque' (the frozen runs: must not); the
+# terminal velocity at the measured orientation is checked the same way
 add_test(NAME settlingNonSpherical.rod.free
     COMMAND ${TUT} settlingNonSpherical
             ${FOAMDEM_WORK}/settlingNonSpherical_rod_free

@@ -14,7 +14,11 @@ orientation is not the prescribed one, or if a frozen body spun.
 
 Free rotation: the angle of the long axis to the vertical over time is
 written to results/orientation.dat and reported; the same terminal-velocity
-check is applied at the measured orientation.
+check is applied at the measured orientation. With the pitching torque on
+(Allrun -torque, default for free rotation) the rod must end within
+--broadside-tol degrees of broadside-on (long axis horizontal; plate: face
+horizontal). The exchange plan must list 'torque' exactly when the torque
+model is on.
 
 Writes results/summary.dat (and results/settling.png without --no-plot).
 """
@@ -116,6 +120,9 @@ def main():
     ap.add_argument("--case", default=".")
     ap.add_argument("--tol", type=float, default=0.01,
                     help="bound on |v_DEM - v_t|/v_t at the end (default 0.01)")
+    ap.add_argument("--broadside-tol", type=float, default=3.0,
+                    help="free rotation with torque: bound on |angle - 90| at"
+                         " the end [deg] (default 3)")
     ap.add_argument("--no-plot", action="store_true")
     args = ap.parse_args()
     case = args.case
@@ -123,6 +130,11 @@ def main():
 
     setup = lig_strings(os.path.join(case, "DEM/post/setup.lig"))
     shape_name, orient = setup["shape"], setup["orientation"]
+    torque_on = setup.get("torque", "off") == "on"
+    plan_torque = any(l.strip().startswith("torque (to DEM)")
+                      for l in open(os.path.join(case, "log.pisoDEMFoam")))
+    checks.append(("exchange plan lists torque iff the torque model is on",
+                   plan_torque == torque_on))
     frozen = orient != "free"
     cp = os.path.join(case, "constant/couplingProperties")
     table = shape_table(cp)
@@ -195,6 +207,16 @@ def main():
         checks.append(("long axis (plate: face) horizontal (0.5 deg)", ok))
     if frozen:
         checks.append(("no spin (rotation frozen)", omega_max == 0.0))
+    broadside_dev = abs(thick_end if isinstance(body, shapes.Plate) else 90 - tilt_end)
+    if not frozen and torque_on:
+        checks.append(("broadside-on reached (%g deg)" % args.broadside_tol,
+                       broadside_dev <= args.broadside_tol))
+
+    def first_time(pred):
+        for a in ang:
+            if pred(a):
+                return "%.3f" % a[0]
+        return "never"
 
     # Hoelzer-Sommerfeld prediction at the measured orientation
     sph = shapes.sphericities(body, f_body)
@@ -264,7 +286,12 @@ def main():
         ("tolerance", "%g" % args.tol),
     ]
     if not frozen:
-        rows.append(("broadsideReached", "yes" if abs(tilt_end - 90) < 5 else "no"))
+        rows.append(("pitchingTorque", "on" if torque_on else "off"))
+        rows.append(("broadsideDeviation_end_deg", "%.3f" % broadside_dev))
+        key = 2 if isinstance(body, shapes.Plate) else 1
+        for lim in (10, 5, 2):
+            rows.append(("time_within_%d_deg_of_broadside_s" % lim, first_time(
+                lambda a: (a[key] if key == 2 else 90 - a[key]) <= lim)))
     rows += [("check: " + name, "ok" if c else "FAILED") for name, c in checks]
     rows.append(("pass", "yes" if ok else "no"))
     caseio.write_summary(case, rows)

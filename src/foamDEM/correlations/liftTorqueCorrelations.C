@@ -198,5 +198,174 @@ vec3 rotationalTorque
     return scaled(Omega, C);
 }
 
+
+
+// * * * * * * * * * * * * * * * Pitching torque  * * * * * * * * * * * * * //
+
+const double zastawnyProlate52[10] =
+    {2.078, 0.279, 0.372, 0.018, 0.98, 0.0, 0.0, 1.0, 0.0, 0.0};
+
+const double zastawnyProlate54[10] =
+    {0.935, 0.146, -0.469, 0.145, 0.116, 0.748, 0.041, 0.221, 0.657, 0.044};
+
+
+double pitchingTorqueCoeff(const double c[10], double Re, double phi)
+{
+    const double s = std::fabs(std::sin(phi));
+    const double co = std::fabs(std::cos(phi));
+    const double ps = c[4] + c[5]*std::pow(Re, c[6]);
+    const double pc = c[7] + c[8]*std::pow(Re, c[9]);
+    // 0^p with p > 0 is 0; sin(pi/2) rounds to 1, cos(pi/2) to 6e-17
+    const double fs = s > 0.0 ? std::pow(s, ps) : 0.0;
+    const double fc = co > 1e-15 ? std::pow(co, pc) : 0.0;
+    return (c[0]/std::pow(Re, c[1]) + c[2]/std::pow(Re, c[3]))*fs*fc;
+}
+
+
+vec3 pitchingTorque
+(
+    const double c[10],
+    double d,
+    double rho,
+    double mu,
+    const vec3& slip,
+    const vec3& axis,
+    bool flat
+)
+{
+    const double w = mag(slip);
+    const double la = mag(axis);
+    if (!(w > 0.0) || !(la > 0.0))
+    {
+        return zero();
+    }
+    // axis with a.w >= 0, unit
+    const double aw = slip.x*axis.x + slip.y*axis.y + slip.z*axis.z;
+    const vec3 a = scaled(axis, (aw < 0.0 ? -1.0 : 1.0)/la);
+    // direction: elongated w x a (a turns away from w), flat a x w
+    const vec3 n = flat ? cross(a, slip) : cross(slip, a);
+    const double nn = mag(n);
+    if (!(nn > 0.0))
+    {
+        return zero();
+    }
+    // angle between w and the axis, in [0, pi/2]
+    const double angle = std::atan2(nn, std::fabs(aw));
+    const double phi = flat ? 0.5*pi - angle : angle;
+    const double Re = rho*w*d/mu;
+    const double T = pi/16.0*pitchingTorqueCoeff(c, Re, phi)*rho*d*d*d*w*w;
+    return scaled(n, T/nn);
+}
+
+
+// * * * * * * * * * * * * Torque as sphere forces  * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi
+//  rotations: A = V diag(lambda) V^T, eigenvectors in the columns of V
+void symmetricEigen(double A[3][3], double lambda[3], double V[3][3])
+{
+    for (int i = 0; i < 3; ++i)
+    {
+        for (int j = 0; j < 3; ++j) V[i][j] = (i == j);
+    }
+    for (int sweep = 0; sweep < 50; ++sweep)
+    {
+        const double off =
+            std::fabs(A[0][1]) + std::fabs(A[0][2]) + std::fabs(A[1][2]);
+        const double diag =
+            std::fabs(A[0][0]) + std::fabs(A[1][1]) + std::fabs(A[2][2]);
+        if (off <= 1e-30*diag || off == 0.0) break;
+        for (int p = 0; p < 2; ++p)
+        {
+            for (int q = p + 1; q < 3; ++q)
+            {
+                if (A[p][q] == 0.0) continue;
+                const double theta = (A[q][q] - A[p][p])/(2.0*A[p][q]);
+                const double t = (theta >= 0.0 ? 1.0 : -1.0)
+                   /(std::fabs(theta) + std::sqrt(theta*theta + 1.0));
+                const double cs = 1.0/std::sqrt(t*t + 1.0);
+                const double sn = t*cs;
+                // A <- R^T A R with the rotation R in the (p, q) plane
+                for (int k = 0; k < 3; ++k)
+                {
+                    const double akp = A[k][p], akq = A[k][q];
+                    A[k][p] = cs*akp - sn*akq;
+                    A[k][q] = sn*akp + cs*akq;
+                }
+                for (int k = 0; k < 3; ++k)
+                {
+                    const double apk = A[p][k], aqk = A[q][k];
+                    A[p][k] = cs*apk - sn*aqk;
+                    A[q][k] = sn*apk + cs*aqk;
+                }
+                for (int k = 0; k < 3; ++k)
+                {
+                    const double vkp = V[k][p], vkq = V[k][q];
+                    V[k][p] = cs*vkp - sn*vkq;
+                    V[k][q] = sn*vkp + cs*vkq;
+                }
+            }
+        }
+    }
+    for (int i = 0; i < 3; ++i) lambda[i] = A[i][i];
+}
+
+} // End anonymous namespace
+
+
+vec3 torqueAsSphereForces(int n, const vec3* x, const vec3& T, vec3* F)
+{
+    vec3 c = zero();
+    for (int k = 0; k < n; ++k)
+    {
+        c.x += x[k].x; c.y += x[k].y; c.z += x[k].z;
+    }
+    if (n > 0) c = scaled(c, 1.0/n);
+
+    // J = sum (|r|^2 I - r r^T)
+    double J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    for (int k = 0; k < n; ++k)
+    {
+        const double r[3] = {x[k].x - c.x, x[k].y - c.y, x[k].z - c.z};
+        const double r2 = r[0]*r[0] + r[1]*r[1] + r[2]*r[2];
+        for (int i = 0; i < 3; ++i)
+        {
+            for (int j = 0; j < 3; ++j)
+            {
+                J[i][j] += (i == j ? r2 : 0.0) - r[i]*r[j];
+            }
+        }
+    }
+
+    // a = J^+ T
+    double lambda[3], V[3][3];
+    symmetricEigen(J, lambda, V);
+    const double lmax =
+        std::fmax(std::fabs(lambda[0]), std::fmax(std::fabs(lambda[1]), std::fabs(lambda[2])));
+    const double t[3] = {T.x, T.y, T.z};
+    double a[3] = {0, 0, 0};
+    for (int m = 0; m < 3; ++m)
+    {
+        if (!(lmax > 0.0) || std::fabs(lambda[m]) <= 1e-12*lmax) continue;
+        const double proj =
+            (V[0][m]*t[0] + V[1][m]*t[1] + V[2][m]*t[2])/lambda[m];
+        for (int i = 0; i < 3; ++i) a[i] += proj*V[i][m];
+    }
+    const vec3 av{a[0], a[1], a[2]};
+
+    vec3 delivered = zero();
+    for (int k = 0; k < n; ++k)
+    {
+        const vec3 r{x[k].x - c.x, x[k].y - c.y, x[k].z - c.z};
+        F[k] = cross(av, r);
+        const vec3 m = cross(r, F[k]);
+        delivered.x += m.x; delivered.y += m.y; delivered.z += m.z;
+    }
+    return delivered;
+}
+
 } // End namespace correlations
 } // End namespace foamDEM

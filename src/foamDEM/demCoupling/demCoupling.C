@@ -352,6 +352,24 @@ Foam::foamDEM::demCoupling::pressureWeight() const
 }
 
 
+Foam::tmp<Foam::volScalarField>
+Foam::foamDEM::demCoupling::pressureConductance
+(
+    const volScalarField& rAU
+) const
+{
+    return alpha_*pressureWeight()*rAU;
+}
+
+
+const Foam::volVectorField&
+Foam::foamDEM::demCoupling::updatePressureGradient(const volScalarField& rAU)
+{
+    gradp_ = pressureScheme_->grad(p_, pressureConductance(rAU));
+    return gradp_;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::foamDEM::demCoupling::demCoupling
@@ -426,6 +444,11 @@ Foam::foamDEM::demCoupling::demCoupling
         mesh_,
         dimensionedVector("zero", dimForce/dimVolume, Zero)
     ),
+    gradp_
+    (
+        IOobject("gradp", mesh_.time().timeName(), mesh_),
+        fvc::grad(p)
+    ),
     nOutside_(0),
     checkMomentumBalance_(dict_.getOrDefault("checkMomentumBalance", false)),
     logExchange_(dict_.getOrDefault("logExchange", false))
@@ -483,6 +506,7 @@ Foam::foamDEM::demCoupling::demCoupling
         forces_.set(i, forceModel::New(forceNames[i], dict_, *this));
     }
     momentum_ = momentumCouplingModel::New(dict_);
+    pressureScheme_ = pressureScheme::New(mesh_, dict_);
     checkForceModels();
     if (Pstream::parRun())
     {

@@ -13,6 +13,7 @@ const Foam::Enum<Foam::foamDEM::quantity> Foam::foamDEM::exchangePlan::names
     { quantity::implicitCoeff, "implicitCoeff" },
     { quantity::fluidVelocity, "fluidVelocity" },
     { quantity::explicitForce, "explicitForce" },
+    { quantity::torque, "torque" },
 });
 
 

@@ -15,4 +15,8 @@ setup()
       atoms 5 5 4 0.004 0.004 0.004 0.004 0.00002
       echo "set             type 1 diameter \${dp} density \${rhop}"; } > DEM/particles
 }
-CHECK=(--particles 244 --dense 0.55)
+# --dense: the precondition that the case is dense. The densest cell's
+# solid fraction, minimum over the writes: 0.551 with the linear pressure
+# scheme, 0.512 with the conductance scheme (the bed's edge cells get their
+# full drag, so the settling bed's lower cells loosen slightly)
+CHECK=(--particles 244 --dense 0.5)

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 // LIGGGHTS
 #include "lammps.h"
@@ -23,6 +24,8 @@
 #include "multisphere.h"
 #include "custom_value_tracker.h"
 #include "scalar_container.h"
+
+#include "liftTorqueCorrelations.H"
 
 namespace Foam
 {
@@ -124,7 +127,8 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
     firstRun_(true),
     implicitDrag_(true),
     multisphere_(nullptr),
-    integrates_(false)
+    integrates_(false),
+    warnedSphereTorque_(false)
 {
     const dictionary& dict = couplingDict.optionalSubDict(typeName + "Coeffs");
 
@@ -440,6 +444,10 @@ void Foam::foamDEM::liggghtsEngine::pull
     const label nB = nBodies();
     const labelList atoms(freeAtoms());
     p.resize(nB + atoms.size(), plan);
+    if (plan.has(quantity::torque))
+    {
+        p.torque = Zero;    // the torque models add to it
+    }
 
     auto vec = [](const double* a) { return vector(a[0], a[1], a[2]); };
     const scalar pi = constant::mathematical::pi;
@@ -586,7 +594,9 @@ void Foam::foamDEM::liggghtsEngine::push
                 << exit(FatalError);
         }
     }
-    if (plan.has(quantity::explicitForce))
+    const bool explicitForce = plan.has(quantity::explicitForce);
+    const bool torque = plan.has(quantity::torque);
+    if (explicitForce || torque)
     {
         fExpl = vectorProperty("dragforce");
         if (!fExpl)
@@ -609,7 +619,7 @@ void Foam::foamDEM::liggghtsEngine::push
         {
             for (direction d = 0; d < 3; ++d)
             {
-                fExpl[i][d] = p.explicitForce[j][d]*share;
+                fExpl[i][d] = explicitForce ? p.explicitForce[j][d]*share : 0;
             }
         }
     };
@@ -617,6 +627,7 @@ void Foam::foamDEM::liggghtsEngine::push
     if (nB)
     {
         LAMMPS_NS::Multisphere& ms = multisphere_->data();
+        List<DynamicList<label>> spheres(torque ? nB : 0);
         for (label i = 0; i < atom.nlocal; ++i)
         {
             const int bodyTag = multisphere_->belongs_to(i);
@@ -624,12 +635,81 @@ void Foam::foamDEM::liggghtsEngine::push
             {
                 const label b = ms.map(bodyTag);
                 write(i, b, 1.0/ms.nrigid(b));
+                if (torque) spheres[b].append(i);
             }
+        }
+        if (torque)
+        {
+            pushBodyTorques(p, spheres, fExpl);
         }
     }
     forAll(atoms, k)
     {
         write(atoms[k], nB + k, 1.0);
+    }
+
+    // A free sphere cannot take a torque through this path (see header)
+    if (torque && !warnedSphereTorque_)
+    {
+        forAll(atoms, k)
+        {
+            if (magSqr(p.torque[nB + k]) > 0)
+            {
+                WarningInFunction
+                    << "A torque model gave free spheres a torque: it is not"
+                    << " applied (LIGGGHTS's implicit coupling fix carries no"
+                    << " per-sphere torque). Reported once." << endl;
+                warnedSphereTorque_ = true;
+                break;
+            }
+        }
+    }
+}
+
+
+void Foam::foamDEM::liggghtsEngine::pushBodyTorques
+(
+    const particleData& p,
+    const List<DynamicList<label>>& spheres,
+    double** fExpl
+) const
+{
+    namespace corr = ::foamDEM::correlations;
+    LAMMPS_NS::Multisphere& ms = multisphere_->data();
+    LAMMPS_NS::Domain& box = *lmp_->domain;
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+
+    std::vector<corr::vec3> r, F;
+    forAll(spheres, b)
+    {
+        const vector& T = p.torque[b];
+        if (magSqr(T) == 0) continue;
+
+        // Sphere centres relative to the centre of mass, unwrapped as
+        // fix multisphere does for its own torque sum
+        double xcm[3], unwrap[3];
+        ms.xcm(xcm, b);
+        const label n = spheres[b].size();
+        r.resize(n);
+        F.resize(n);
+        forAll(spheres[b], k)
+        {
+            const label i = spheres[b][k];
+            box.unmap(atom.x[i], atom.image[i], unwrap);
+            r[k] = corr::vec3
+                {unwrap[0] - xcm[0], unwrap[1] - xcm[1], unwrap[2] - xcm[2]};
+        }
+        corr::torqueAsSphereForces
+        (
+            int(n), r.data(), corr::vec3{T.x(), T.y(), T.z()}, F.data()
+        );
+        forAll(spheres[b], k)
+        {
+            const label i = spheres[b][k];
+            fExpl[i][0] += F[k].x;
+            fExpl[i][1] += F[k].y;
+            fExpl[i][2] += F[k].z;
+        }
     }
 }
 

@@ -1,6 +1,5 @@
 #include "pressureGradientForce.H"
 #include "demCoupling.H"
-#include "fvcGrad.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -24,7 +23,7 @@ void Foam::foamDEM::pressureGradientForce::addRequirements
 
 void Foam::foamDEM::pressureGradientForce::addForce(particleData& p) const
 {
-    const volVectorField gradP(fvc::grad(coupling_.p()));
+    const volVectorField& gradP = coupling_.pressureGradient();
     const scalar rho = coupling_.rhoFluid();
     forAll(p.cell, i)
     {

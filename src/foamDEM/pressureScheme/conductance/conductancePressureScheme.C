@@ -40,36 +40,31 @@ inline scalar ownerWeight(scalar DP, scalar DN, scalar w, bool ownSide)
     return sum > Foam::VSMALL ? aP/sum : w;
 }
 
-// The owner weights of every internal and coupled face
-Foam::tmp<Foam::surfaceScalarField> ownerWeights
+// Set result = combine(D_P, D_N, w) on every internal and coupled face;
+// other boundary faces keep their values
+template<class Combine>
+void setFaceValues
 (
     const Foam::volScalarField& D,
-    bool ownSide
+    Foam::surfaceScalarField& result,
+    const Combine& combine
 )
 {
     using namespace Foam;
     const fvMesh& mesh = D.mesh();
     const surfaceScalarField& weights = mesh.weights();
-
-    tmp<surfaceScalarField> tlambda
-    (
-        new surfaceScalarField("conductanceWeights", weights)
-    );
-    surfaceScalarField& lambda = tlambda.ref();
-
     const labelUList& owner = mesh.owner();
     const labelUList& neighbour = mesh.neighbour();
-    scalarField& lambdaIn = lambda.primitiveFieldRef();
+
+    scalarField& internal = result.primitiveFieldRef();
     forAll(owner, facei)
     {
-        lambdaIn[facei] = ownerWeight
-        (
-            D[owner[facei]], D[neighbour[facei]], weights[facei], ownSide
-        );
+        internal[facei] =
+            combine(D[owner[facei]], D[neighbour[facei]], weights[facei]);
     }
 
-    auto& lambdaBf = lambda.boundaryFieldRef();
-    forAll(lambdaBf, patchi)
+    auto& boundary = result.boundaryFieldRef();
+    forAll(boundary, patchi)
     {
         const fvPatchScalarField& Dp = D.boundaryField()[patchi];
         if (Dp.coupled())
@@ -79,10 +74,36 @@ Foam::tmp<Foam::surfaceScalarField> ownerWeights
             const scalarField& w = weights.boundaryField()[patchi];
             forAll(DP, i)
             {
-                lambdaBf[patchi][i] = ownerWeight(DP[i], DN[i], w[i], ownSide);
+                boundary[patchi][i] = combine(DP[i], DN[i], w[i]);
             }
         }
     }
+}
+
+// The owner weights of every internal and coupled face
+Foam::tmp<Foam::surfaceScalarField> ownerWeights
+(
+    const Foam::volScalarField& D,
+    bool ownSide
+)
+{
+    Foam::tmp<Foam::surfaceScalarField> tlambda
+    (
+        new Foam::surfaceScalarField
+        (
+            "conductanceWeights",
+            D.mesh().weights()
+        )
+    );
+    setFaceValues
+    (
+        D,
+        tlambda.ref(),
+        [ownSide](scalar DP, scalar DN, scalar w)
+        {
+            return ownerWeight(DP, DN, w, ownSide);
+        }
+    );
     return tlambda;
 }
 
@@ -98,37 +119,8 @@ Foam::foamDEM::conductancePressureScheme::faceConductance
     // Boundary faces: the linear scheme's values (the cell's own D on
     // walls and inlets); internal and coupled faces: halves in series
     tmp<surfaceScalarField> tDf(fvc::interpolate(D));
-    surfaceScalarField& Df = tDf.ref();
-    Df.rename("pressureConductance");
-
-    const surfaceScalarField& weights = mesh_.weights();
-    const labelUList& owner = mesh_.owner();
-    const labelUList& neighbour = mesh_.neighbour();
-
-    scalarField& DfIn = Df.primitiveFieldRef();
-    forAll(owner, facei)
-    {
-        DfIn[facei] = seriesConductance
-        (
-            D[owner[facei]], D[neighbour[facei]], weights[facei]
-        );
-    }
-
-    auto& DfBf = Df.boundaryFieldRef();
-    forAll(DfBf, patchi)
-    {
-        const fvPatchScalarField& Dp = D.boundaryField()[patchi];
-        if (Dp.coupled())
-        {
-            const scalarField DP(Dp.patchInternalField());
-            const scalarField DN(Dp.patchNeighbourField());
-            const scalarField& w = weights.boundaryField()[patchi];
-            forAll(DP, i)
-            {
-                DfBf[patchi][i] = seriesConductance(DP[i], DN[i], w[i]);
-            }
-        }
-    }
+    tDf.ref().rename("pressureConductance");
+    setFaceValues(D, tDf.ref(), seriesConductance);
     return tDf;
 }
 

@@ -30,6 +30,7 @@ Description
 #include "pisoControl.H"
 #include "fvOptions.H"
 #include "demCoupling.H"
+#include "cellReconstruct.H"
 #include "sigFpe.H"
 
 typedef Foam::PhaseIncompressibleTurbulenceModel
@@ -75,7 +76,7 @@ int main(int argc, char *argv[])
         {
             volVectorField& U0 = U.oldTime();
             U0.primitiveFieldRef() =
-                fvc::reconstruct(alphaPhi)().primitiveField()
+                foamDEM::cellReconstruct(alphaPhi)().primitiveField()
                /alpha.oldTime().primitiveField();
             U0.correctBoundaryConditions();
         }

@@ -1,0 +1,23 @@
+# Parallel tests on the bench fluidBed case (bench/cases/fluidBed, set up by
+# bench/bench.py). FOAMDEM_WORK comes from integration.cmake, which includes
+# this file with the other tests/tutorials/*.cmake.
+set(PARALLEL_DIR ${CMAKE_CURRENT_SOURCE_DIR}/parallel)
+
+# np = 1 and np = 2 agree on the statistics of a fluidised bed (3 600
+# particles on the distributor one cell above the inlet, 2 U_mf = 2.126 m/s,
+# 0.4 s; ~100 s on 2 cores): particle count exact, time-mean centre-of-mass
+# height within 3 %, time-mean pressure drop within 10 % over 0.2-0.4 s
+# (about 5 and 2.5 times the scatter between perturbed serial runs, twice
+# the batch standard error; doc/performance.md)
+add_test(NAME parallel.fluidBed.statistics
+    COMMAND ${PARALLEL_DIR}/compareFluidBed ${FOAMDEM_WORK}/parallel_fluidBed)
+set_tests_properties(parallel.fluidBed.statistics PROPERTIES
+    LABELS "integration;parallel" TIMEOUT 600 PROCESSORS 2)
+
+# Exchange bytes per rank follow the particles the rank moves: CFD and DEM
+# slabs crossed at N and 2N particles (bytes per moved particle constant
+# within 2 %), and 0 B with aligned slabs at 2N
+add_test(NAME parallel.exchange.scalesWithLocal
+    COMMAND ${PARALLEL_DIR}/checkExchangeScaling ${FOAMDEM_WORK}/parallel_exchange)
+set_tests_properties(parallel.exchange.scalesWithLocal PROPERTIES
+    LABELS "integration;parallel" TIMEOUT 300 PROCESSORS 2)

@@ -8,11 +8,12 @@ set(PARALLEL_DIR ${CMAKE_CURRENT_SOURCE_DIR}/parallel)
 # 0.4 s; ~100 s on 2 cores): particle count exact, time-mean centre-of-mass
 # height within 3 %, time-mean pressure drop within 10 % over 0.2-0.4 s
 # (about 5 and 2.5 times the scatter between perturbed serial runs, twice
-# the batch standard error; doc/performance.md)
+# the batch standard error; doc/performance.md). 467 s measured with
+# another MPI job on the machine (ranks wait for each other): timeout 1200 s
 add_test(NAME parallel.fluidBed.statistics
     COMMAND ${PARALLEL_DIR}/compareFluidBed ${FOAMDEM_WORK}/parallel_fluidBed)
 set_tests_properties(parallel.fluidBed.statistics PROPERTIES
-    LABELS "integration;parallel" TIMEOUT 600 PROCESSORS 2)
+    LABELS "integration;parallel" TIMEOUT 1200 PROCESSORS 2)
 
 # Exchange bytes per rank follow the particles the rank moves: CFD and DEM
 # slabs crossed at N and 2N particles (bytes per moved particle constant

@@ -195,8 +195,11 @@ def fixed_bed_fit(u, dp, dp_plateau, lo=0.05, hi=0.75):
 
 
 def intersect(a, b, level):
-    """U where a U + b U^2 = level (positive root)."""
+    """U where a U + b U^2 = level (positive root); NaN if the fit never
+    reaches the level (b < 0 and its maximum below it)."""
     if abs(b) < 1e-300:
         return level / a
     disc = a * a + 4.0 * b * level
+    if disc < 0:
+        return float("nan")
     return (-a + math.sqrt(disc)) / (2.0 * b)

@@ -125,7 +125,16 @@ def main():
     # Bed voidage on the fixed-bed part of the decreasing branch (the fitted
     # points): equivalent uniform bed height H = 2 (mean particle height - floor)
     u_b = np.interp(tb, t, u_t)
-    fixed_dn = (tb > t1) & (u_b < umf_dn)
+    umf_wy = fluidbed.wen_yu_umf(d, rhop, rho, mu, g)
+    u_fixed = umf_dn
+    if not math.isfinite(umf_dn):
+        # The check on U_mf fails (NaN); eps_mf from the samples below
+        # U_mf(Wen-Yu)/2, so that the plateau is still reported
+        print("validate.py: the fixed-bed fit of the decreasing branch,"
+              " dP = %.4g U + %.4g U^2, never reaches the plateau %.1f Pa:"
+              " U_mf undefined" % (a_dn, b_dn, dp_plateau))
+        u_fixed = 0.5 * umf_wy
+    fixed_dn = (tb > t1) & (u_b < u_fixed)
     if fixed_dn.sum() < 2:
         sys.exit("validate.py: no fixed-bed DEM samples on the decreasing branch")
     h_mf = 2.0 * (float(zmean[fixed_dn].mean()) - z_floor)
@@ -135,7 +144,6 @@ def main():
 
     umf_ergun = fluidbed.ergun_umf(d, rhop, rho, mu, g, eps_mf)
     umf_ergun0 = fluidbed.ergun_umf(d, rhop, rho, mu, g, eps0)
-    umf_wy = fluidbed.wen_yu_umf(d, rhop, rho, mu, g)
     err_umf = umf_dn / umf_ergun - 1
     err_umf_wy = umf_dn / umf_wy - 1
     err_umf_up = umf_up / umf_ergun0 - 1

@@ -363,9 +363,9 @@ Foam::foamDEM::demCoupling::pressureConductance
 
 
 const Foam::volVectorField&
-Foam::foamDEM::demCoupling::updatePressureGradient(const volScalarField& rAU)
+Foam::foamDEM::demCoupling::updatePressureGradient(const volScalarField& D)
 {
-    gradp_ = pressureScheme_->grad(p_, pressureConductance(rAU));
+    gradp_ = pressureScheme_->grad(p_, D);
     return gradp_;
 }
 

@@ -104,6 +104,10 @@ def main():
     ap.add_argument("--case", default=".")
     ap.add_argument("--ci", action="store_true", help="CI variant: window after the transient")
     ap.add_argument("--no-plot", action="store_true")
+    ap.add_argument("--window", type=float, nargs=2, metavar=("T0", "T1"),
+                    help="quasi-steady window [s] (default: the last"
+                         " quasiSteadyTime of the run); writes"
+                         " results/summary_T0-T1.dat, no plots")
     args = ap.parse_args()
     case = args.case
 
@@ -150,11 +154,14 @@ def main():
 
     # Quasi-steady window
     t_end = max(t_h[-1], t_c[-1])
-    if args.ci:
+    if args.window:
+        t0, t_end = args.window
+    elif args.ci:
         t0 = TRANSIENT
     else:
         t0 = max(t_end - par["quasiSteadyTime"], TRANSIENT)
-    w_c, w_a, w_h = t_c >= t0, t_a >= t0, t_h >= t0
+    window = lambda t: (t >= t0) & (t <= t_end + 1e-9)
+    w_c, w_a, w_h = window(t_c), window(t_a), window(t_h)
 
     table = [
         ("gasVelocity", "m/s", stats(u_c, w_c)),
@@ -181,7 +188,7 @@ def main():
     # quasi-steady window; the settling time is the last time the error
     # exceeded the tolerance
     t_check = TRANSIENT if args.ci else t0
-    after = t_c >= t_check
+    after = (t_c >= t_check) & (t_c <= t_end + 1e-9)
     rel = np.abs(u_c / ubar - 1)
     err = float(np.max(rel[after])) if after.any() else np.nan
     outside = t_c[rel > TOLERANCE]
@@ -202,7 +209,9 @@ def main():
     ]
 
     os.makedirs(os.path.join(case, "results"), exist_ok=True)
-    with open(os.path.join(case, "results/summary.dat"), "w") as f:
+    summary = os.path.join(case, "results", "summary%s.dat"
+                           % ("_%g-%g" % (t0, t_end) if args.window else ""))
+    with open(summary, "w") as f:
         f.write("# densePneumaticConveying%s: %d particles, pipe %.4g m, t = %.4g..%.4g s"
                 " (window)\n" % (" CI" if args.ci else "", n0, L, t0, t_end))
         f.write("# slug: axial bins of %.4g m with solid fraction > %.3g, longest"
@@ -213,9 +222,9 @@ def main():
         f.write("# checks\n")
         for name, ok, text in checks:
             f.write("%-24s %-4s %s\n" % (name, "PASS" if ok else "FAIL", text))
-    print(open(os.path.join(case, "results/summary.dat")).read())
+    print(open(summary).read())
 
-    if not args.no_plot:
+    if not args.no_plot and not args.window:
         plot(case, t_c, u_c, f_c, ubar, t_a, v_slug, v_part, length, t_h, mdot,
              coord, phi, t0)
 

@@ -7,6 +7,11 @@ controlDict, fvOptions entries).
 --ci        the CI variant (ci* values of DEM/parameters)
 --continue  resume the coupled run: start from the latest time that has both
             OpenFOAM fields and a DEM restart (DEM/post/restart)
+--np N      processes: the DEM and the CFD are split the same way, in two
+            halves across the pipe (z, normal to gravity and the axis) and
+            the rest along x: (N/2 1 2) for even N, (N 1 1) for odd N. The
+            halves across the pipe hold the same load whatever the slug's
+            position; an x split puts the slug on one rank at a time.
 """
 import argparse
 import math
@@ -78,6 +83,7 @@ def main():
     ap.add_argument("--case", default=".")
     ap.add_argument("--ci", action="store_true")
     ap.add_argument("--continue", dest="cont", action="store_true")
+    ap.add_argument("--np", type=int, default=1)
     args = ap.parse_args()
     case = args.case
 
@@ -150,6 +156,10 @@ def main():
         restart = "DEM/post/packed.restart"
         fresh, segment = 1, "0"
 
+    if args.np < 1:
+        sys.exit("prepare.py: --np must be at least 1, got %d" % args.np)
+    grid = (args.np // 2, 1, 2) if args.np % 2 == 0 else (args.np, 1, 1)
+
     post = os.path.join(case, "DEM", "post")
     for d in (post, os.path.join(post, "dump"), os.path.join(post, "restart")):
         os.makedirs(d, exist_ok=True)
@@ -158,6 +168,8 @@ def main():
         for k, v in lig.items():
             f.write("variable %-14s equal %.12g\n" % (k, v))
         f.write("variable %-14s equal %d\n" % ("fresh", fresh))
+        f.write("variable %-14s equal %d\n" % ("procX", grid[0]))
+        f.write("variable %-14s equal %d\n" % ("procZ", grid[2]))
         f.write("variable %-14s string %s\n" % ("restartFile", restart))
         f.write("variable %-14s string %s\n" % ("segment", segment))
 
@@ -182,6 +194,7 @@ def main():
         f.write("%-14s %.12g;\n" % ("endTime", p("endTime")))
         f.write("%-14s %.12g;\n" % ("writeInterval", p("writeInterval")))
         f.write("%-14s %.12g;\n" % ("gasVelocity", par["gasVelocity"]))
+        f.write("%-14s (%d %d %d);\n" % (("decomposition",) + grid))
 
     print("densePneumaticConveying%s: pipe %.4g m x D %.4g m (%d cells along x),"
           " slug core %.4g m, span %.4g m, shape volume %.4g m^3 (%.0f particles"

@@ -14,15 +14,15 @@ solver logs, and writes
 
 Slug: axial bins (binWidth) whose solid fraction exceeds slugThreshold; the
 slug is the longest connected run of such bins on the periodic axis
-(foamdem.slug). Also reported: the mean solid fraction of the slug bins
-(phi_s), the median of the other bins (the layer, phi_layer), and the slug
-velocity that continuity predicts from them, v_p phi_s / (phi_s - phi_layer)
-(the slug picks up the resting layer at its front and leaves it at its rear),
-a consistency check of the measured slug velocity. Its velocity is the rate of change of its unwrapped centre
+(foamdem.slug). Its velocity is the rate of change of its unwrapped centre
 (mid-point of its ends), from a local linear fit over +-smoothTime; the
-in-slug particle velocity is the mean v_x of the particles in the slug's
+in-slug particle velocity v_p is the mean v_x of the particles in the slug's
 bins; the solids mass flow rate is sum(m v_x)/L (the mean over the pipe of
-the flow through a section).
+the flow through a section). Also reported: the mean solid fraction of the
+slug bins (phi_s), the median of the other bins (the layer, phi_layer), and
+the slug velocity that continuity predicts from them,
+v_p phi_s / (phi_s - phi_layer) (the slug picks up the resting layer at its
+front and leaves it at its rear), a consistency check of the measured one.
 
 Checks (exit status 1 if one fails; --ci also applies them, the full run
 reports them): no particle lost (count constant, the same ids in every

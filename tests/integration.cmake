@@ -3,10 +3,12 @@ set(FOAMDEM_WORK ${CMAKE_BINARY_DIR}/work)
 set(TUT ${CMAKE_CURRENT_SOURCE_DIR}/integration/runTutorial)
 
 # Each tutorial registers its tests in tests/tutorials/<name>.cmake, each
-# OpenFOAM-side test application in tests/foamApps/<name>.cmake
+# OpenFOAM-side test application in tests/foamApps/<name>.cmake, the Python
+# post-processing's unit tests in tests/python/<name>.cmake
 file(GLOB TUTORIAL_TESTS
     ${CMAKE_CURRENT_SOURCE_DIR}/tutorials/*.cmake
-    ${CMAKE_CURRENT_SOURCE_DIR}/foamApps/*.cmake)
+    ${CMAKE_CURRENT_SOURCE_DIR}/foamApps/*.cmake
+    ${CMAKE_CURRENT_SOURCE_DIR}/python/*.cmake)
 foreach(t ${TUTORIAL_TESTS})
     include(${t})
 endforeach()

@@ -170,3 +170,119 @@ def read_controller(case):
     # Keep the last entry of each time (a continuation overrides)
     _, idx = np.unique(d[::-1, 0], return_index=True)
     return d[::-1][idx]
+
+
+# ---------------------------------------------------------------------------
+# The reference's measures (Lavrinec et al.; the case page
+# dense-pneumatic-conveying.md, "How the reference measured them"), from
+# particle frames (dumps 'id x y z vx vy vz ix'):
+#   - slices one particle diameter long, void fraction from the particle
+#     centres, eps = 1 - N V_p / V_slice, with V_slice the slice of the exact
+#     cylinder (pi R^2 dx);
+#   - a periodic moving average over nAverage slices;
+#   - slug slices: smoothed eps <= 1 - phiMin; the front is the lower edge
+#     of the last slug slice, the rear the upper edge of the first; length =
+#     front - rear (plus the pipe length if the slug wraps). Of several runs
+#     of slug slices the longest is the slug;
+#   - slug velocity from the unwrapped front by central differences over
+#     +-stencil frames;
+#   - particles-in-slug velocity: the magnitude of the mean velocity vector
+#     of the particles with rear <= x < front;
+#   - solids mass flow rate: the mass of the particles that cross the plane
+#     x = xPlane (net, by particle id from frame to frame), accumulated from
+#     the first frame and divided by the elapsed time.
+# ---------------------------------------------------------------------------
+
+def read_dump_fast(path):
+    """As read_dump (step, rows sorted by id), parsing the numbers in one
+    call (a full-size frame of 32 194 particles in a fraction of a second)."""
+    with open(path) as f:
+        head = [f.readline() for _ in range(9)]
+        body = f.read()
+    step, n = int(head[1]), int(head[3])
+    ncol = len(head[8].split()) - 2
+    data = np.fromstring(body, sep=" ")
+    if n == 0 or data.size != n * ncol:
+        raise ValueError("%s: %d atoms listed, %d numbers read" % (path, n, data.size))
+    data = data.reshape(n, ncol)
+    return step, data[np.argsort(data[:, 0], kind="stable")]
+
+
+def periodic_moving_average(values, n):
+    """Mean over n consecutive entries centred on each (n odd), periodic."""
+    half = n // 2
+    return sum(np.roll(values, k) for k in range(-half, half + 1)) / n
+
+
+def reference_slug(x, xlo, L, R, dp, phi_min, n_average):
+    """The slug of one frame by the reference's slices: (rear, front,
+    length, number of separate slug runs) or None when no slice (or every
+    slice) is slug. x: particle centres along the axis (any image)."""
+    n = int(round(L / dp))
+    width = L / n
+    xw = np.mod(x - xlo, L)
+    k = np.minimum((xw / width).astype(int), n - 1)
+    count = np.bincount(k, minlength=n)
+    eps = 1 - count * (np.pi / 6 * dp ** 3) / (np.pi * R * R * width)
+    dense = periodic_moving_average(eps, n_average) <= 1 - phi_min
+    start, run = longest_circular_run(dense)
+    if run == 0 or run == n:
+        return None
+    runs = int(np.sum(dense & ~np.roll(dense, 1)))
+    last = (start + run - 1) % n
+    rear = xlo + (start + 1) * width
+    front = xlo + last * width
+    if last < start:
+        front += L
+    return rear, front, front - rear, runs
+
+
+def reference_measures(dump_files, dt, xlo, L, R, dp, rhop, x_plane,
+                       phi_min=0.45, n_average=5):
+    """The reference's frame-wise measures of a run's dumps (sorted by step).
+
+    Returns a dict of arrays over the frames: t, rear, front (unwrapped
+    along the run), length, vParticles (|mean velocity vector| in the
+    slug), runs (separate slug runs in the frame), crossedMass (net mass
+    across x_plane since the first frame). Frames without a slug have NaN."""
+    files = sorted(dump_files, key=lambda f: int(re.findall(r"\.(\d+)\.txt$", f)[0]))
+    m = rhop * np.pi / 6 * dp ** 3
+    out = {k: np.full(len(files), np.nan) for k in
+           ("t", "rear", "front", "length", "vParticles", "runs", "crossedMass")}
+    prev_ids, prev_side, crossed = None, None, 0.0
+    for i, f in enumerate(files):
+        step, d = read_dump_fast(f)
+        ids, x, v = d[:, 0], d[:, 1], d[:, 4:7]
+        out["t"][i] = step * dt
+        # Side of the plane, counted over the periodic images: it changes
+        # by one per crossing (x + ix L is the unwrapped position)
+        side = np.floor((x + d[:, 7] * L - x_plane) / L)
+        if prev_ids is not None:
+            if ids.shape != prev_ids.shape or (ids != prev_ids).any():
+                raise ValueError("%s: particle ids differ from the previous frame" % f)
+            crossed += m * float(np.sum(side - prev_side))
+        out["crossedMass"][i] = crossed
+        prev_ids, prev_side = ids, side
+        s = reference_slug(x, xlo, L, R, dp, phi_min, n_average)
+        if s is None:
+            continue
+        rear, front, length, runs = s
+        inside = np.mod(x - rear, L) < length
+        out["rear"][i], out["front"][i], out["length"][i] = rear, front, length
+        out["runs"][i] = runs
+        if inside.any():
+            out["vParticles"][i] = float(np.linalg.norm(v[inside].mean(axis=0)))
+    have = np.isfinite(out["front"])
+    if have.any():
+        out["front"][have] = unwrap(out["front"][have], L)
+    return out
+
+
+def central_difference(t, x, stencil):
+    """dx/dt by central differences over +-stencil samples (NaN where the
+    stencil leaves the series or meets a NaN)."""
+    v = np.full(len(t), np.nan)
+    for i in range(stencil, len(t) - stencil):
+        a, b = i - stencil, i + stencil
+        v[i] = (x[b] - x[a]) / (t[b] - t[a])
+    return v

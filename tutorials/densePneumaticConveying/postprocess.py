@@ -24,6 +24,21 @@ the slug velocity that continuity predicts from them,
 v_p phi_s / (phi_s - phi_layer) (the slug picks up the resting layer at its
 front and leaves it at its rear), a consistency check of the measured one.
 
+The reference's measures (the case page's "How the reference measured
+them", foamdem.slug.reference_measures) are computed next to these from
+the particle dumps (every dumpInterval: 0.025 s as the reference's frames;
+CI 0.005 s): slices of one particle diameter with the void fraction of the
+particle centres in the slice of the exact cylinder, a moving average over
+5 slices, slug slices at solid fraction >= 0.45, front and rear at the inner
+edges of the end slices, slug velocity from the unwrapped front by central
+differences over +-refStencilFrames frames (0.075 s; CI: 0.015 s), the
+particles-in-slug velocity as the magnitude of their mean velocity vector,
+and the solids mass flow rate from the net mass crossing the plane
+x = massFlowPlane, accumulated from t = 0 and divided by the elapsed time
+(also over the window alone, to compare runs). The full run writes
+results/comparison.dat: each quantity's published value, foamDEM with the
+reference's measures and with its own.
+
 Checks (exit status 1 if one fails; --ci also applies them, the full run
 reports them): no particle lost (count constant, the same ids in every
 dump), particles crossed the periodic plane (image flags between dumps),
@@ -44,6 +59,16 @@ sys.path.insert(0, os.path.join(os.environ.get("FOAMDEM_DIR", "../.."), "python"
 from foamdem import caseio, slug  # noqa: E402
 
 TRANSIENT = 0.02        # controller transient excluded from its check [s]
+
+# The reference's published results, quasi-steady state t > 4 s (Lavrinec
+# et al.; case page dense-pneumatic-conveying.md): mean, standard deviation
+REFERENCE = [
+    ("gasVelocity", 2.98, 0.02),
+    ("slugVelocity", 1.30, 0.02),
+    ("particleVelocityInSlug", 0.83, 0.01),
+    ("solidsMassFlowRate", 1.40, None),
+    ("slugLength", 0.47, 0.01),
+]
 TOLERANCE = 0.02        # relative error allowed of the mean gas velocity
 SMOOTH_TIME = 0.025     # half-width of the slug velocity fit [s]
 
@@ -92,6 +117,12 @@ def stats(values, mask):
     if v.size == 0:
         return np.nan, np.nan
     return float(v.mean()), float(v.std())
+
+
+def p_ci(par, name, ci):
+    """A parameter, or its ci* counterpart in the CI variant."""
+    ci_name = "ci" + name[0].upper() + name[1:]
+    return par[ci_name] if ci and ci_name in par else par[name]
 
 
 def solver_logs(case):
@@ -175,9 +206,30 @@ def main():
         ("controllerForce", "N/m^3", stats(f_c, w_c)),
     ]
 
+    # The reference's measures, from the particle frames
+    dumps = glob.glob(os.path.join(case, "DEM/post/dump/particles.*.txt"))
+    x_plane = p_ci(par, "massFlowPlane", args.ci)
+    ref = slug.reference_measures(dumps, par["demTimestep"], setup["xlo"], L, R,
+                                  par["dp"], rhop, x_plane)
+    t_r = ref["t"]
+    v_front = slug.central_difference(t_r, ref["front"], int(par["refStencilFrames"]))
+    w_r = window(t_r)
+    crossed = ref["crossedMass"]
+    mdot_cum = crossed[-1] / (t_r[-1] - t_r[0])
+    i0, i1 = np.flatnonzero(w_r)[[0, -1]] if w_r.sum() >= 2 else (0, len(t_r) - 1)
+    mdot_window = (crossed[i1] - crossed[i0]) / max(t_r[i1] - t_r[i0], 1e-300)
+    ref_table = [
+        ("gasVelocity", "m/s", stats(u_c, w_c)),
+        ("slugVelocity", "m/s", stats(v_front, w_r)),
+        ("particleVelocityInSlug", "m/s", stats(ref["vParticles"], w_r)),
+        ("solidsMassFlowRate", "kg/s", (mdot_cum, np.nan)),
+        ("slugLength", "m", stats(ref["length"], w_r)),
+        ("solidsMassFlowRateWindow", "kg/s", (mdot_window, np.nan)),
+    ]
+    multi_runs = int(np.sum(ref["runs"][w_r] > 1))
+
     # Checks
     n0 = int(n_h[0])
-    dumps = glob.glob(os.path.join(case, "DEM/post/dump/particles.*.txt"))
     crossings, n_crossed, same_ids, dump_counts = slug.periodic_crossings(dumps)
     lost = int(n0 - n_h.min()) if len(n_h) else -1
     ids_ok = same_ids and all(c == n0 for c in dump_counts)
@@ -200,6 +252,10 @@ def main():
          % (crossings, n_crossed, len(dump_counts))),
         ("allLocated", not_found == 0,
          "%d coupling steps with particles not found in the CFD mesh" % not_found),
+        ("referenceMeasures", all(np.isfinite(m) for _, _, (m, _) in ref_table),
+         "slug found in %d of %d frames of the window (%d frames with more than"
+         " one run of slug slices); all five quantities finite"
+         % (int(np.isfinite(ref["length"][w_r]).sum()), int(w_r.sum()), multi_runs)),
         ("controllerHoldsTarget", np.isfinite(err) and err <= TOLERANCE,
          "max |Umean/Ubar - 1| after %.3g s = %.4g (allowed %.3g); last"
          " excursion beyond it at t = %.4g s"
@@ -217,19 +273,47 @@ def main():
         f.write("# quantity unit mean std\n")
         for name, unit, (m, s) in table:
             f.write("%-24s %-6s %12.6g %12.6g\n" % (name, unit, m, s))
+        f.write("# the reference's measures (particle frames every %.4g s; slices of"
+                " %.4g m, exact cylinder cross-section; %d-slice moving average;"
+                " slug at solid fraction >= 0.45; front velocity over +-%d frames;"
+                " mass flow across x = %.4g m, cumulative from t = %.4g s and over"
+                " the window)\n"
+                % (p_ci(par, "dumpInterval", args.ci), par["dp"], 5,
+                   int(par["refStencilFrames"]), x_plane, t_r[0]))
+        for name, unit, (m, s) in ref_table:
+            f.write("ref_%-24s %-6s %12.6g %12.6g\n" % (name, unit, m, s))
         f.write("# checks\n")
         for name, ok, text in checks:
             f.write("%-24s %-4s %s\n" % (name, "PASS" if ok else "FAIL", text))
     print(open(summary).read())
 
+    if not args.ci and not args.window:
+        own = dict((name, m) for name, _, (m, _) in table)
+        refm = dict((name, m) for name, _, (m, _) in ref_table)
+        path = os.path.join(case, "results", "comparison.dat")
+        with open(path, "w") as f:
+            f.write("# densePneumaticConveying against Lavrinec et al. (case page"
+                    " dense-pneumatic-conveying.md), window %.4g..%.4g s, SI units\n"
+                    % (t0, t_end))
+            f.write("# foamDEM_referenceMeasures: the reference's definitions;"
+                    " foamDEM_ownMeasures: postprocess.py's axial bins\n")
+            f.write("# solidsMassFlowRate: reference measure cumulative from t = 0"
+                    " (as published); own measure sum(m v_x)/L over the window\n")
+            f.write("# name reference foamDEM_referenceMeasures foamDEM_ownMeasures\n")
+            for name, value, _ in REFERENCE:
+                f.write("%-24s %10.4g %12.5g %12.5g\n" % (name, value, refm[name], own[name]))
+        print(open(path).read())
+
     if not args.no_plot and not args.window:
         plot(case, t_c, u_c, f_c, ubar, t_a, v_slug, v_part, length, t_h, mdot,
-             coord, phi, t0)
+             coord, phi, t0, (t_r, v_front, ref["vParticles"], ref["length"],
+                              crossed / np.maximum(t_r - t_r[0], 1e-300)))
 
     return 0 if all(ok for _, ok, _ in checks) else 1
 
 
-def plot(case, t_c, u_c, f_c, ubar, t_a, v_slug, v_part, length, t_h, mdot, coord, phi, t0):
+def plot(case, t_c, u_c, f_c, ubar, t_a, v_slug, v_part, length, t_h, mdot, coord, phi, t0,
+         ref):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -241,13 +325,21 @@ def plot(case, t_c, u_c, f_c, ubar, t_a, v_slug, v_part, length, t_h, mdot, coor
     ax[0].legend(loc="best", fontsize=8)
     ax[1].plot(t_c, f_c, lw=0.8, color="C3")
     ax[1].set_ylabel("controller force\nN/m$^3$")
+    t_r, v_front, v_ref, len_ref, mdot_cum = ref
     ax[2].plot(t_a, v_slug, lw=0.8, label="slug")
     ax[2].plot(t_a, v_part, lw=0.8, label="particles in slug")
+    ax[2].plot(t_r, v_front, "o-", ms=2, lw=0.8, label="slug front (reference's measure)")
+    ax[2].plot(t_r, v_ref, "s-", ms=2, lw=0.8, label="particles in slug (reference's)")
     ax[2].set_ylabel("velocity m/s")
     ax[2].legend(loc="best", fontsize=8)
-    ax[3].plot(t_h, mdot, lw=0.8, color="C2")
+    ax[3].plot(t_h, mdot, lw=0.8, color="C2", label="sum(m v_x)/L")
+    ax[3].plot(t_r[1:], mdot_cum[1:], lw=0.8, color="C5",
+               label="plane crossings, cumulative (reference's)")
+    ax[3].legend(loc="best", fontsize=8)
     ax[3].set_ylabel("solids mass\nflow rate kg/s")
-    ax[4].plot(t_a, length, lw=0.8, color="C4")
+    ax[4].plot(t_a, length, lw=0.8, color="C4", label="axial bins")
+    ax[4].plot(t_r, len_ref, "o-", ms=2, lw=0.8, color="C6", label="reference's slices")
+    ax[4].legend(loc="best", fontsize=8)
     ax[4].set_ylabel("slug length m")
     ax[4].set_xlabel("t (s)")
     for a in ax:

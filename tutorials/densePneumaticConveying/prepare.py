@@ -122,7 +122,15 @@ def main():
     vp = math.pi / 6 * par["dp"] ** 3
     s = math.radians(angle)
 
+    # Particle-wall pair coefficients: the harmonic mean of the particle's
+    # and the wall's value (the reference's DEM), or the wall's own value
+    def pair(a, b):
+        return 2 * a * b / (a + b) if par["wallPairHarmonic"] else b
+
     lig = {
+        "wallPairFriction": pair(par["friction"], par["wallFriction"]),
+        "wallPairRestitution": pair(par["restitution"], par["wallRestitution"]),
+        "wallPairRolling": pair(par["rollingFriction"], par["wallRolling"]),
         "pipeRadius": R,
         "xlo": -L / 2, "xhi": L / 2,
         "boxLo": -(R + 0.002), "boxHi": R + 0.002,

@@ -1,0 +1,106 @@
+#!/usr/bin/python3
+"""Unit test of foamdem.slug's reference measures (the densePneumaticConveying
+case page's definitions) on synthetic particle frames whose answers follow
+by hand from those definitions:
+
+- a periodic pipe (L = 1 m, R = 0.042 m, d = 5 mm) holds a slug of solid
+  fraction 0.6 over 0.4 m and a layer of 0.3 elsewhere, particles spread
+  evenly along x in each region;
+- one slice in the middle of the slug holds half its particles;
+- the whole pattern translates rigidly at u along x (positions wrapped into
+  the box with image flags), the slug particles carry the velocity vector
+  (0.8, 0, 0.6) (magnitude 1), the layer's (0.1, 0, 0).
+
+Expected: the moving average bridges the looser slice (one slug); with
+the threshold 0.45 midway between 0.6 and 0.3, the 5-slice
+moving average marks exactly the slug's 80 slices; the front is the lower
+edge of the last, the rear the upper edge of the first, so the length is
+0.4 - 2 d = 0.39 m; the slug velocity is u; the particles-in-slug velocity
+is 1; the mass crossing a fixed plane over a time in which the pattern
+moves a whole number of pipe lengths is exactly M u T / L.
+"""
+import os
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from foamdem import slug  # noqa: E402
+
+L, XLO, R, DP, RHOP = 1.0, -0.5, 0.042, 0.005, 890.0
+DT_DEM = 5e-6
+VP = np.pi / 6 * DP ** 3
+
+
+def make_pattern(slug_length=0.4, phi_slug=0.6, phi_layer=0.3):
+    """Particle x (relative to the slug rear at 0), and whether in the slug."""
+    per_m = lambda phi: phi * np.pi * R * R / VP
+    n_s = int(round(per_m(phi_slug) * slug_length))
+    n_l = int(round(per_m(phi_layer) * (L - slug_length)))
+    xs = (np.arange(n_s) + 0.5) * slug_length / n_s
+    # A looser slice in the middle of the slug (half its particles): the
+    # moving average bridges it, the raw slices would split the slug
+    hole = np.flatnonzero((xs >= 0.2) & (xs < 0.2 + DP))[::2]
+    xs = np.delete(xs, hole)
+    n_s = len(xs)
+    xl = slug_length + (np.arange(n_l) + 0.5) * (L - slug_length) / n_l
+    return np.concatenate([xs, xl]), np.concatenate([np.ones(n_s, bool), np.zeros(n_l, bool)])
+
+
+def write_frames(folder, u, dt_frame, n_frames, rear0=-0.3):
+    x0, in_slug = make_pattern()
+    n = len(x0)
+    v = np.where(in_slug[:, None], [0.8, 0.0, 0.6], [0.1, 0.0, 0.0])
+    files = []
+    for k in range(n_frames):
+        xu = XLO + np.mod(rear0 - XLO, L) + x0 + u * k * dt_frame  # unwrapped
+        ix = np.floor((xu - XLO) / L)
+        x = xu - ix * L
+        step = int(round(k * dt_frame / DT_DEM))
+        path = os.path.join(folder, "particles.%d.txt" % step)
+        with open(path, "w") as f:
+            f.write("ITEM: TIMESTEP\n%d\nITEM: NUMBER OF ATOMS\n%d\n" % (step, n))
+            f.write("ITEM: BOX BOUNDS pp ff ff\n-0.5 0.5\n-0.044 0.044\n-0.044 0.044\n")
+            f.write("ITEM: ATOMS id x y z vx vy vz ix\n")
+            rows = np.column_stack([np.arange(1, n + 1), x, np.zeros(n), np.zeros(n),
+                                    v, ix])
+            np.savetxt(f, rows, fmt="%d %.9g %g %g %g %g %g %d")
+        files.append(path)
+    return files, n * RHOP * VP
+
+
+class ReferenceMeasures(unittest.TestCase):
+
+    def run_case(self, u, n_frames):
+        with tempfile.TemporaryDirectory() as tmp:
+            files, mass = write_frames(tmp, u, 0.025, n_frames)
+            out = slug.reference_measures(files, DT_DEM, XLO, L, R, DP, RHOP, 0.375)
+        return out, mass
+
+    def test_aligned(self):
+        # u dt = 0.04 m: eight slices per frame; 0.625 s: one pipe length
+        out, mass = self.run_case(1.6, 26)
+        t = out["t"]
+        self.assertTrue(np.all(np.isfinite(out["length"])))
+        np.testing.assert_allclose(out["length"], 0.4 - 2 * DP, atol=1e-9)
+        self.assertTrue(np.all(out["runs"] == 1))
+        v = slug.central_difference(t, out["front"], 3)
+        np.testing.assert_allclose(v[3:-3], 1.6, rtol=1e-9)
+        self.assertTrue(np.all(np.isnan(v[:3])) and np.all(np.isnan(v[-3:])))
+        np.testing.assert_allclose(out["vParticles"], 1.0, rtol=1e-12)
+        mdot = out["crossedMass"][-1] / (t[-1] - t[0])
+        self.assertAlmostEqual(mdot / (mass * 1.6 / L), 1.0, places=12)
+
+    def test_not_aligned(self):
+        # u dt = 0.0325 m (6.5 slices): the ends jitter by at most a slice
+        out, mass = self.run_case(1.3, 21)
+        self.assertTrue(np.all(np.abs(out["length"] - (0.4 - 2 * DP)) <= DP + 1e-9))
+        v = slug.central_difference(out["t"], out["front"], 3)[3:-3]
+        self.assertLess(np.max(np.abs(v / 1.3 - 1)), DP / (6 * 0.0325) + 1e-9)
+        np.testing.assert_allclose(out["vParticles"], 1.0, rtol=1e-12)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -22,6 +22,16 @@ Description
     Laminar or turbulent (constant/turbulenceProperties, void-fraction
     weighted), fvOptions supported.
 
+    Inlet semantics: U is the interstitial velocity u, and the flux through
+    a face is eps_f u_f . S_f (alphaPhi). A fixedValue U_in on an inlet
+    brings the superficial inflow eps_inlet U_in. The void fraction's
+    boundary conditions are read from <startTime>/voidfraction when the
+    case has one; without it eps = 1 (fixedValue) on non-wall patches with
+    a prescribed U and zeroGradient on walls and outlets, so an inlet
+    velocity is the superficial velocity, also under a bed resting on the
+    inlet. For an interstitial inflow give the inlet zeroGradient in
+    0/voidfraction (the stability guard reports the superficial flow).
+
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"

@@ -1,6 +1,9 @@
 #include "demCoupling.H"
 #include "uniformDimensionedFields.H"
 #include "zeroGradientFvPatchFields.H"
+#include "fixedValueFvPatchFields.H"
+#include "wallPolyPatch.H"
+#include "processorFvPatch.H"
 #include "fvmSup.H"
 #include "fvc.H"
 #include "stabilityGuard.H"
@@ -88,18 +91,96 @@ Foam::foamDEM::demCoupling::readModelType(const dictionary& dict)
 }
 
 
-Foam::wordList Foam::foamDEM::demCoupling::alphaPatchTypes(const fvMesh& mesh)
+Foam::wordList Foam::foamDEM::demCoupling::alphaPatchTypes
+(
+    const volVectorField& U
+)
 {
-    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    const polyBoundaryMesh& patches = U.mesh().boundaryMesh();
     wordList types(patches.size(), zeroGradientFvPatchScalarField::typeName);
     forAll(patches, patchi)
     {
-        if (polyPatch::constraintType(patches[patchi].type()))
+        const polyPatch& pp = patches[patchi];
+        const fvPatchVectorField& Up = U.boundaryField()[patchi];
+        if (polyPatch::constraintType(pp.type()))
         {
-            types[patchi] = patches[patchi].type();
+            types[patchi] = pp.type();
+        }
+        else if
+        (
+            !isA<wallPolyPatch>(pp)
+         && Up.fixesValue()
+         && Up.type() != "noSlip"
+        )
+        {
+            types[patchi] = fixedValueFvPatchScalarField::typeName;
         }
     }
     return types;
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::foamDEM::demCoupling::createVoidFraction(const volVectorField& U)
+{
+    const fvMesh& mesh = U.mesh();
+    // Not registered: the coupling's own field (alpha_) takes the name
+    IOobject io
+    (
+        "voidfraction",
+        mesh.time().timeName(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+
+    tmp<volScalarField> talpha;
+    if (io.typeHeaderOk<volScalarField>(true))
+    {
+        Info<< "    Void fraction boundary conditions from "
+            << mesh.time().timeName()/io.name() << ":" << nl;
+        talpha = tmp<volScalarField>::New(io, mesh);
+        if (talpha().dimensions() != dimless)
+        {
+            FatalErrorInFunction
+                << talpha().objectPath() << ": the void fraction must be"
+                << " dimensionless ([0 0 0 0 0 0 0]), got "
+                << talpha().dimensions() << exit(FatalError);
+        }
+    }
+    else
+    {
+        Info<< "    Void fraction boundary conditions: no "
+            << mesh.time().timeName()/io.name() << ", default (fixedValue 1"
+            << " where U is prescribed, zeroGradient on walls and outlets):"
+            << nl;
+        io.readOpt() = IOobject::NO_READ;
+        talpha = tmp<volScalarField>::New
+        (
+            io,
+            mesh,
+            dimensionedScalar("one", dimless, 1),
+            alphaPatchTypes(U)
+        );
+    }
+
+    // Processor patches are not the user's; the others exist on every rank
+    for (const fvPatchScalarField& pf : talpha().boundaryField())
+    {
+        if (isA<processorFvPatch>(pf.patch()))
+        {
+            continue;
+        }
+        Info<< "        " << pf.patch().name() << ": " << pf.type();
+        const label n = returnReduce(pf.size(), sumOp<label>());
+        if (pf.fixesValue() && n > 0)
+        {
+            Info<< " (mean " << gSum(pf)/n << ")";
+        }
+        Info<< nl;
+    }
+    return talpha;
 }
 
 
@@ -408,9 +489,7 @@ Foam::foamDEM::demCoupling::demCoupling
             IOobject::NO_READ,
             IOobject::AUTO_WRITE
         ),
-        mesh_,
-        dimensionedScalar("one", dimless, 1),
-        alphaPatchTypes(mesh_)
+        createVoidFraction(U)
     ),
     Ksl_
     (

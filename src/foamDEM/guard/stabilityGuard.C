@@ -2,6 +2,7 @@
 #include "demCoupling.H"
 #include "timeStepCriteria.H"
 #include "mathematicalConstants.H"
+#include "wallFvPatch.H"
 
 namespace
 {
@@ -205,6 +206,54 @@ void Foam::foamDEM::stabilityGuard::checkCourant(scalar vMax)
 }
 
 
+void Foam::foamDEM::stabilityGuard::checkBoundaryVoidFraction()
+{
+    // An inflow or outflow patch next to particles whose own void fraction
+    // is not 1: a velocity U prescribed there brings eps_f U, not U
+    const volScalarField& alpha = coupling_.voidFraction();
+    const volVectorField& U = coupling_.U();
+    forAll(alpha.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& ap = alpha.boundaryField()[patchi];
+        const fvPatch& patch = ap.patch();
+        if (patch.coupled() || isA<wallFvPatch>(patch))
+        {
+            continue;
+        }
+        const scalarField aIn(ap.patchInternalField());
+        const scalarField& magSf = patch.magSf();
+        scalar area = 0, aArea = 0, aInMin = 1, flux = 0;
+        forAll(ap, facei)
+        {
+            if (aIn[facei] < 0.99 && ap[facei] < 1 - 1e-9)
+            {
+                area += magSf[facei];
+                aArea += ap[facei]*magSf[facei];
+                aInMin = min(aInMin, aIn[facei]);
+            }
+        }
+        flux = gSum(U.boundaryField()[patchi] & patch.Sf());
+        reduce(area, sumOp<scalar>());
+        reduce(aArea, sumOp<scalar>());
+        reduce(aInMin, minOp<scalar>());
+        if (area > 0)
+        {
+            const word kind =
+                flux < 0 ? "inflow" : flux > 0 ? "outflow" : "flow";
+            warn
+            (
+                patch.name() + ": superficial " + kind + " = "
+              + fmt(aArea/area) + " x U on " + pct(area/gSum(magSf))
+              + " of the patch (its void fraction is " + ap.type()
+              + ", eps down to " + fmt(aInMin) + " in the cells next to"
+                " it). For a superficial velocity U give the patch"
+                " fixedValue 1 in 0/voidfraction."
+            );
+        }
+    }
+}
+
+
 void Foam::foamDEM::stabilityGuard::check()
 {
     using namespace ::foamDEM::correlations;
@@ -375,6 +424,7 @@ void Foam::foamDEM::stabilityGuard::check()
         checkCellSize(dMax);
     }
     checkCourant(vMax);
+    checkBoundaryVoidFraction();
 
     // Report
     const bool overridden = dict_.getOrDefault("override", false);

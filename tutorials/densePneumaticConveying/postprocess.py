@@ -215,8 +215,9 @@ def main():
     v_front = slug.central_difference(t_r, ref["front"], int(par["refStencilFrames"]))
     w_r = window(t_r)
     crossed = ref["crossedMass"]
-    mdot_cum = crossed[-1] / (t_r[-1] - t_r[0])
     i0, i1 = np.flatnonzero(w_r)[[0, -1]] if w_r.sum() >= 2 else (0, len(t_r) - 1)
+    # Cumulative from the first frame (t = 0) to the end of the window
+    mdot_cum = crossed[i1] / (t_r[i1] - t_r[0])
     mdot_window = (crossed[i1] - crossed[i0]) / max(t_r[i1] - t_r[i0], 1e-300)
     ref_table = [
         ("gasVelocity", "m/s", stats(u_c, w_c)),

@@ -228,6 +228,7 @@ def main():
         ("solidsMassFlowRateWindow", "kg/s", (mdot_window, np.nan)),
     ]
     multi_runs = int(np.sum(ref["runs"][w_r] > 1))
+    ref_finite = all(np.isfinite(m) for _, _, (m, _) in ref_table)
 
     # Checks
     n0 = int(n_h[0])
@@ -253,10 +254,11 @@ def main():
          % (crossings, n_crossed, len(dump_counts))),
         ("allLocated", not_found == 0,
          "%d coupling steps with particles not found in the CFD mesh" % not_found),
-        ("referenceMeasures", all(np.isfinite(m) for _, _, (m, _) in ref_table),
+        ("referenceMeasures", ref_finite,
          "slug found in %d of %d frames of the window (%d frames with more than"
-         " one run of slug slices); all five quantities finite"
-         % (int(np.isfinite(ref["length"][w_r]).sum()), int(w_r.sum()), multi_runs)),
+         " one run of slug slices); all quantities finite: %s"
+         % (int(np.isfinite(ref["length"][w_r]).sum()), int(w_r.sum()), multi_runs,
+            "yes" if ref_finite else "no")),
         ("controllerHoldsTarget", np.isfinite(err) and err <= TOLERANCE,
          "max |Umean/Ubar - 1| after %.3g s = %.4g (allowed %.3g); last"
          " excursion beyond it at t = %.4g s"

@@ -222,7 +222,7 @@ void Foam::foamDEM::stabilityGuard::checkBoundaryVoidFraction()
         }
         const scalarField aIn(ap.patchInternalField());
         const scalarField& magSf = patch.magSf();
-        scalar area = 0, aArea = 0, aInMin = 1, flux = 0;
+        scalar area = 0, aArea = 0, aInMin = 1;
         forAll(ap, facei)
         {
             if (aIn[facei] < 0.99 && ap[facei] < 1 - 1e-9)
@@ -232,7 +232,7 @@ void Foam::foamDEM::stabilityGuard::checkBoundaryVoidFraction()
                 aInMin = min(aInMin, aIn[facei]);
             }
         }
-        flux = gSum(U.boundaryField()[patchi] & patch.Sf());
+        const scalar flux = gSum(U.boundaryField()[patchi] & patch.Sf());
         reduce(area, sumOp<scalar>());
         reduce(aArea, sumOp<scalar>());
         reduce(aInMin, minOp<scalar>());

@@ -47,3 +47,13 @@ foreach(law gidaspow kochHill)
         LABELS "integration;tutorial" TIMEOUT 60
         FIXTURES_REQUIRED ErgunPackedBed_${law}_floors)
 endforeach()
+
+# The user's void fraction boundary conditions: an interstitial inlet
+# (0/voidfraction zeroGradient on the inlet) under a bed on the inlet is
+# read from the file and the stability guard reports the superficial
+# inflow it implies (0.42 x U)
+add_test(NAME ErgunPackedBed.interstitialInletGuard
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkInterstitialInlet
+            ${FOAMDEM_WORK}/ErgunPackedBed_interstitialInlet)
+set_tests_properties(ErgunPackedBed.interstitialInletGuard PROPERTIES
+    LABELS "integration;tutorial" TIMEOUT 300)

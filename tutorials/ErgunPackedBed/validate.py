@@ -136,9 +136,10 @@ def main():
     if args.drag == "gidaspow":
         prediction = lambda U, e: ergun.ergun_gradient(U, e, d, rho, mu)
     else:
-        law = getattr(drag, {"kochHill": "koch_hill", "diFelice": "di_felice",
-                             "beetstra": "beetstra", "tenneti": "tenneti",
-                             "rong": "rong"}[args.drag])
+        if args.drag not in drag.LAWS:
+            sys.exit("validate.py: --drag %s: no prediction; valid: %s"
+                     % (args.drag, " ".join(sorted(drag.LAWS))))
+        law = drag.LAWS[args.drag]
         vp1 = np.pi / 6 * d ** 3
 
         def prediction(U, e):

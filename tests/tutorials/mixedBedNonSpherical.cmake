@@ -9,3 +9,13 @@ add_test(NAME mixedBedNonSpherical.ci
     COMMAND ${TUT} mixedBedNonSpherical ${FOAMDEM_WORK}/mixedBedNonSpherical -ci)
 set_tests_properties(mixedBedNonSpherical.ci PROPERTIES
     LABELS "integration;tutorial" TIMEOUT 300)
+
+# Multisphere bodies in parallel: np 1 and np 2 (bed cut in two slabs along
+# x) both pass the checks above, with the same body and sphere counts, and
+# agree on the fluidised bed's mean height (8 %) and dP/(W/A) (0.10), about
+# twice the spread between packing seeds (tests/parallel/compareMixedBed)
+add_test(NAME parallel.mixedBedNonSpherical.statistics
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/parallel/compareMixedBed
+            ${FOAMDEM_WORK}/parallel_mixedBed)
+set_tests_properties(parallel.mixedBedNonSpherical.statistics PROPERTIES
+    LABELS "integration;parallel" TIMEOUT 600 PROCESSORS 2)

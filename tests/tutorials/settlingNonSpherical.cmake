@@ -25,3 +25,18 @@ add_test(NAME settlingNonSpherical.rod.free
             -ci -shape rod -orientation free -tilt 45)
 set_tests_properties(settlingNonSpherical.rod.free PROPERTIES
     LABELS "integration;tutorial" TIMEOUT 300)
+
+# A body across the rank cut: the rod, free to rotate from 45 deg with the
+# pitching torque and rotational drag, inserted at x = 0.06 m where the DEM
+# is cut in two (its 9 spheres on both ranks). np 1 and np 2 agree on the
+# body's height, vertical velocity and spin to 1e-8 of their largest values
+# (measured: 4.7e-9, 2.4e-11, 2.9e-11; the insertion position differs by
+# ~1e-9 m between the runs)
+add_test(NAME parallel.settlingNonSpherical.straddlingBody
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/compareParallel
+            ${FOAMDEM_WORK}/parallel_settlingNonSpherical 2 1e-8
+            "sed -i 's/^variable dx0    equal 1e-3$/variable dx0    equal 1e-9/' DEM/parameters"
+            settlingNonSpherical no "3,6,8"
+            -shape rod -orientation free -tilt 45)
+set_tests_properties(parallel.settlingNonSpherical.straddlingBody PROPERTIES
+    LABELS "integration;parallel" TIMEOUT 300 PROCESSORS 2)

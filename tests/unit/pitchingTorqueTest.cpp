@@ -21,29 +21,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double deg = kPi/180.0;
 constexpr double tol = 1e-12;
 
-vec3 sum(const std::vector<vec3>& v)
-{
-    vec3 s{0, 0, 0};
-    for (const vec3& a : v) { s.x += a.x; s.y += a.y; s.z += a.z; }
-    return s;
-}
-
-vec3 moment(const std::vector<vec3>& x, const std::vector<vec3>& F)
-{
-    vec3 c{0, 0, 0};
-    for (const vec3& a : x) { c.x += a.x; c.y += a.y; c.z += a.z; }
-    const double n = double(x.size());
-    c = vec3{c.x/n, c.y/n, c.z/n};
-    vec3 m{0, 0, 0};
-    for (size_t k = 0; k < x.size(); ++k)
-    {
-        const vec3 r{x[k].x - c.x, x[k].y - c.y, x[k].z - c.z};
-        const vec3 t = cross(r, F[k]);
-        m.x += t.x; m.y += t.y; m.z += t.z;
-    }
-    return m;
-}
-
 double dist(const vec3& a, const vec3& b)
 {
     return mag(vec3{a.x - b.x, a.y - b.y, a.z - b.z});
@@ -121,53 +98,3 @@ TEST(PitchingTorque, PlateNormalTurnsTowardsSlip)
     EXPECT_GT(dn.z, 0.0);
 }
 
-// Sum F_k = 0 and sum r_k x F_k = T for a plate-like grid (J invertible)
-TEST(TorqueAsSphereForces, PlateGridDeliversTorque)
-{
-    std::vector<vec3> x;
-    for (int i = 0; i < 5; ++i)
-        for (int j = 0; j < 3; ++j)
-            x.push_back(vec3{0.3 + 0.7e-3*i, -0.1 + 0.4e-3*j, 0.05});
-    // rotate the grid off the axes
-    const double c = std::cos(0.3), sn = std::sin(0.3);
-    for (vec3& p : x) p = vec3{c*p.x - sn*p.z, p.y, sn*p.x + c*p.z};
-    const vec3 T{1.3e-8, -2.1e-8, 0.7e-8};
-    std::vector<vec3> F(x.size());
-    const vec3 got = torqueAsSphereForces(int(x.size()), x.data(), T, F.data());
-    EXPECT_LT(mag(sum(F)), 1e-11*mag(F[0]));   // x ~ 0.3 m, r ~ 1 mm: round-off
-    EXPECT_LT(dist(moment(x, F), T), 1e-12*mag(T));
-    EXPECT_LT(dist(got, T), 1e-12*mag(T));
-}
-
-// A straight chain (rod): J is singular along the axis. The transverse
-// torque is delivered exactly, the axial part is dropped.
-TEST(TorqueAsSphereForces, RodDropsAxialPart)
-{
-    const vec3 e{0.6, 0.0, 0.8};
-    std::vector<vec3> x;
-    for (int k = 0; k < 9; ++k)
-    {
-        const double s = (k - 4)*0.55e-3;
-        x.push_back(vec3{0.06 + s*e.x, 0.06 + s*e.y, 0.2 + s*e.z});
-    }
-    const vec3 Tperp{0.8e-8, 1.5e-8, -0.6e-8};   // . e = 0
-    const vec3 T{Tperp.x + 2e-8*e.x, Tperp.y + 2e-8*e.y, Tperp.z + 2e-8*e.z};
-    std::vector<vec3> F(x.size());
-    const vec3 got = torqueAsSphereForces(int(x.size()), x.data(), T, F.data());
-    EXPECT_LT(mag(sum(F)), 1e-11*mag(F[0]));   // x ~ 0.3 m, r ~ 1 mm: round-off
-    EXPECT_LT(dist(moment(x, F), Tperp), 1e-10*mag(Tperp));
-    EXPECT_LT(dist(got, Tperp), 1e-10*mag(Tperp));
-    for (const vec3& f : F)
-    {
-        EXPECT_LT(std::fabs(f.x*e.x + f.y*e.y + f.z*e.z), 1e-12*mag(F[0]));
-    }
-}
-
-TEST(TorqueAsSphereForces, SingleSphereGetsNothing)
-{
-    const vec3 x{0.1, 0.2, 0.3};
-    vec3 F{1, 1, 1};
-    const vec3 got = torqueAsSphereForces(1, &x, vec3{1e-8, 0, 0}, &F);
-    EXPECT_EQ(mag(F), 0.0);
-    EXPECT_EQ(mag(got), 0.0);
-}

@@ -129,6 +129,16 @@ void Foam::foamDEM::stabilityGuard::checkRelaxationTime
             " below " + fmt(tauP) + " s."
         );
     }
+    if (coupling_.engine().holdsBodyDrag() && dtCFD > tauP)
+    {
+        refuse
+        (
+            "multisphere bodies hold their drag over the coupling interval "
+          + fmt(dtCFD) + " s, larger than the particle relaxation time "
+          + fmt(tauP) + " s: unstable. Use a CFD step (couplingInterval x"
+            " DEM step) below " + fmt(tauP) + " s."
+        );
+    }
     if (!coupling_.engine().implicitDrag() && dtDEM > tauP)
     {
         refuse
@@ -325,6 +335,9 @@ void Foam::foamDEM::stabilityGuard::check()
         const bool perParticle = p.radius.size() > 0 && E.size() && nu.size();
         if (perParticle)
         {
+            // A multisphere body touches with its spheres: the radius is
+            // that of its smallest sphere, the mass the body's
+            const scalarList rc(engine.contactRadii());
             forAll(p.radius, i)
             {
                 const scalar Ei = material(E, types[i], 0);
@@ -332,17 +345,17 @@ void Foam::foamDEM::stabilityGuard::check()
                 const scalar m = p.density[i]*p.volume(i);
                 rayleigh.take
                 (
-                    rayleighTimeStep(p.radius[i], p.density[i], Ei, nui),
-                    2*p.radius[i]
+                    rayleighTimeStep(rc[i], p.density[i], Ei, nui),
+                    2*rc[i]
                 );
                 hertz.take
                 (
                     hertzContactTime
                     (
-                        m/2, p.radius[i]/2,
+                        m/2, rc[i]/2,
                         effectiveYoungsModulus(Ei, nui, Ei, nui), vImpact
                     ),
-                    2*p.radius[i]
+                    2*rc[i]
                 );
             }
         }

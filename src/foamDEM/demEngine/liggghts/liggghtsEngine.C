@@ -237,13 +237,6 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
     );
     if (multisphere_)
     {
-        if (Pstream::parRun())
-        {
-            FatalIOErrorInFunction(dict)
-                << "The DEM script uses fix multisphere: coupled multisphere"
-                << " bodies run serially for now. Run without -parallel."
-                << exit(FatalIOError);
-        }
         if (implicitDrag_ && dict.found("dragIntegration"))
         {
             FatalIOErrorInFunction(dict)
@@ -607,45 +600,74 @@ void Foam::foamDEM::liggghtsEngine::push
         }
     }
 
-    // Terms of particle j shared by 'share' spheres, written to atom i
-    auto write = [&](label i, label j, scalar share)
+    // Terms of free sphere j, written to atom i
+    auto write = [&](label i, label j)
     {
         if (Ksl)
         {
-            Ksl[i] = p.implicitCoeff[j]*share;
+            Ksl[i] = p.implicitCoeff[j];
             for (direction d = 0; d < 3; ++d) uf[i][d] = p.fluidVelocity[j][d];
         }
         if (fExpl)
         {
             for (direction d = 0; d < 3; ++d)
             {
-                fExpl[i][d] = explicitForce ? p.explicitForce[j][d]*share : 0;
+                fExpl[i][d] = explicitForce ? p.explicitForce[j][d] : 0;
             }
         }
     };
 
-    if (nB)
+    if (multisphere_)
     {
+        // Bodies: the force and torque go to the body itself (fix
+        // multisphere adds dragforce_cm and hdtorque_cm to the body's sums
+        // every DEM step; both are per-body data, exchanged with the body
+        // between ranks). Its spheres, wherever they are, get nothing.
         LAMMPS_NS::Multisphere& ms = multisphere_->data();
-        List<DynamicList<label>> spheres(torque ? nB : 0);
-        for (label i = 0; i < atom.nlocal; ++i)
+        double** fBody = ms.extract_double_vector("dragforce_cm");
+        double** tBody = ms.extract_double_vector("hdtorque_cm");
+        if (!fBody || !tBody)
         {
-            const int bodyTag = multisphere_->belongs_to(i);
-            if (bodyTag >= 0)
+            FatalErrorInFunction
+                << "fix multisphere has no dragforce_cm/hdtorque_cm body"
+                << " properties (LIGGGHTS 3.8 has them)." << exit(FatalError);
+        }
+        // The implicit drag K (u_f - v) of a body is evaluated with the
+        // body's velocity of this coupling step and held, like the explicit
+        // terms, until the next one (no DEM-side implicit update for bodies)
+        const bool implicitPart = Ksl && p.velocity.size() == p.size();
+        if (Ksl && !implicitPart)
+        {
+            FatalErrorInFunction
+                << "Implicit coupling of multisphere bodies needs the body"
+                << " velocities in the exchange plan." << abort(FatalError);
+        }
+        for (label b = 0; b < nB; ++b)
+        {
+            vector F(explicitForce ? p.explicitForce[b] : vector::zero);
+            if (implicitPart)
             {
-                const label b = ms.map(bodyTag);
-                write(i, b, 1.0/ms.nrigid(b));
-                if (torque) spheres[b].append(i);
+                F += p.implicitCoeff[b]*(p.fluidVelocity[b] - p.velocity[b]);
+            }
+            const vector T(torque ? p.torque[b] : vector::zero);
+            for (direction d = 0; d < 3; ++d)
+            {
+                fBody[b][d] = F[d];
+                tBody[b][d] = T[d];
             }
         }
-        if (torque)
+        for (label i = 0; i < atom.nlocal; ++i)
         {
-            pushBodyTorques(p, spheres, fExpl);
+            if (multisphere_->belongs_to(i) >= 0)
+            {
+                if (Ksl) Ksl[i] = 0;
+                if (fExpl) fExpl[i][0] = fExpl[i][1] = fExpl[i][2] = 0;
+            }
         }
     }
     forAll(atoms, k)
     {
-        write(atoms[k], nB + k, 1.0);
+        write(atoms[k], nB + k);
     }
 
     // A free sphere cannot take a torque through this path (see header)
@@ -667,50 +689,34 @@ void Foam::foamDEM::liggghtsEngine::push
 }
 
 
-void Foam::foamDEM::liggghtsEngine::pushBodyTorques
-(
-    const particleData& p,
-    const List<DynamicList<label>>& spheres,
-    double** fExpl
-) const
+Foam::scalarList Foam::foamDEM::liggghtsEngine::contactRadii() const
 {
-    namespace corr = ::foamDEM::correlations;
-    LAMMPS_NS::Multisphere& ms = multisphere_->data();
-    LAMMPS_NS::Domain& box = *lmp_->domain;
     const LAMMPS_NS::Atom& atom = *lmp_->atom;
-
-    std::vector<corr::vec3> r, F;
-    forAll(spheres, b)
+    const label nB = nBodies();
+    const labelList atoms(freeAtoms());
+    scalarList r(nB + atoms.size(), GREAT);
+    if (nB)
     {
-        const vector& T = p.torque[b];
-        if (magSqr(T) == 0) continue;
-
-        // Sphere centres relative to the centre of mass, unwrapped as
-        // fix multisphere does for its own torque sum
-        double xcm[3], unwrap[3];
-        ms.xcm(xcm, b);
-        const label n = spheres[b].size();
-        r.resize(n);
-        F.resize(n);
-        forAll(spheres[b], k)
+        // The rank that owns a body holds all its spheres, as own atoms or
+        // ghosts (fix multisphere extends the ghost cut-off by the largest
+        // bounding radius and sums the body's forces over them)
+        LAMMPS_NS::Multisphere& ms = multisphere_->data();
+        const label nAll = atom.nlocal + atom.nghost;
+        for (label i = 0; i < nAll; ++i)
         {
-            const label i = spheres[b][k];
-            box.unmap(atom.x[i], atom.image[i], unwrap);
-            r[k] = corr::vec3
-                {unwrap[0] - xcm[0], unwrap[1] - xcm[1], unwrap[2] - xcm[2]};
-        }
-        corr::torqueAsSphereForces
-        (
-            int(n), r.data(), corr::vec3{T.x(), T.y(), T.z()}, F.data()
-        );
-        forAll(spheres[b], k)
-        {
-            const label i = spheres[b][k];
-            fExpl[i][0] += F[k].x;
-            fExpl[i][1] += F[k].y;
-            fExpl[i][2] += F[k].z;
+            const int bodyTag = multisphere_->belongs_to(i);
+            const label b = bodyTag >= 0 ? ms.map(bodyTag) : -1;
+            if (b >= 0)
+            {
+                r[b] = min(r[b], scalar(atom.radius[i]));
+            }
         }
     }
+    forAll(atoms, k)
+    {
+        r[nB + k] = atom.radius[atoms[k]];
+    }
+    return r;
 }
 
 

@@ -7,3 +7,11 @@
 add_test(NAME python.slugReferenceMeasures
     COMMAND sh -c "\"\${FOAMDEM_PYTHON:-python3}\" ${CMAKE_CURRENT_LIST_DIR}/testSlugReferenceMeasures.py")
 set_tests_properties(python.slugReferenceMeasures PROPERTIES LABELS "unit;python" TIMEOUT 120)
+
+# The spouted bed's plateau analysis (RMS deviation, amplitude spectrum and
+# dominant frequency, height mean and maximum) on synthetic signals of
+# known frequencies and RMS (fails with the RMS over N instead of N - 1, or
+# with the second-largest peak taken)
+add_test(NAME python.spoutedAnalysis
+    COMMAND sh -c "\"\${FOAMDEM_PYTHON:-python3}\" ${CMAKE_CURRENT_LIST_DIR}/testSpoutedAnalysis.py")
+set_tests_properties(python.spoutedAnalysis PROPERTIES LABELS "unit;python" TIMEOUT 120)

@@ -1,4 +1,5 @@
 #include "liggghtsEngine.H"
+#include "orientationKinematics.H"
 #include "addToRunTimeSelectionTable.H"
 #include "Pstream.H"
 #include "IFstream.H"
@@ -128,7 +129,8 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
     implicitDrag_(true),
     multisphere_(nullptr),
     integrates_(false),
-    warnedSphereTorque_(false)
+    warnedSphereTorque_(false),
+    shapedSpheres_(false)
 {
     const dictionary& dict = couplingDict.optionalSubDict(typeName + "Coeffs");
 
@@ -144,6 +146,7 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
             << "2(explicit implicit)" << exit(FatalIOError);
     }
     implicitDrag_ = (dragIntegration == "implicit");
+    shapedSpheres_ = dict.getOrDefault<bool>("shapedSpheres", false);
 
     // Paths are relative to the (undecomposed) case directory
     const fileName caseDir(runTime.globalPath());
@@ -273,6 +276,16 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
             << " (explicit DEM drag integration)" << endl;
     }
 
+    if (shapedSpheres_ && !orientation())
+    {
+        run("fix foamDEM_orientation all property/atom foamDEMOrientation"
+            " vector yes no no 0 0 0 0",
+            "adding the shaped spheres' orientation");
+        Info<< "    LIGGGHTS: shaped spheres: free spheres carry their atom"
+            << " type as shape type and an orientation turned by their spin"
+            << endl;
+    }
+
     if (!lmp_->modify->find_fix_style("couple/cfd", 0))
     {
         run("fix foamDEM_couple all couple/cfd couple_every 0 mpi",
@@ -337,6 +350,12 @@ double** Foam::foamDEM::liggghtsEngine::vectorProperty(const char* name) const
         name, "property/atom", "vector", 0, 0, "foamDEM", false
     );
     return fix ? fix->array_atom : nullptr;
+}
+
+
+double** Foam::foamDEM::liggghtsEngine::orientation() const
+{
+    return vectorProperty("foamDEMOrientation");
 }
 
 
@@ -416,6 +435,23 @@ Foam::vector Foam::foamDEM::liggghtsEngine::gravity() const
 
 void Foam::foamDEM::liggghtsEngine::advance(label nSteps)
 {
+    if (shapedSpheres_)
+    {
+        // Turn each free sphere's orientation by its spin over the interval
+        namespace corr = ::foamDEM::correlations;
+        double** q = orientation();
+        const LAMMPS_NS::Atom& atom = *lmp_->atom;
+        const double dt = nSteps*lmp_->update->dt;
+        for (const label i : freeAtoms())
+        {
+            if (q[i][0] == 0 && q[i][1] == 0 && q[i][2] == 0 && q[i][3] == 0)
+            {
+                corr::randomOrientation(std::uint64_t(atom.tag[i]), q[i]);
+            }
+            corr::rotateBySpin(q[i], atom.omega[i], dt);
+        }
+    }
+
     const string cmd
     (
         firstRun_
@@ -525,6 +561,26 @@ void Foam::foamDEM::liggghtsEngine::pull
         }
     }
 
+    // A shaped sphere's axes (columns), from its quaternion (a sphere not
+    // yet turned gets its random start orientation)
+    double** q = shapedSpheres_ ? orientation() : nullptr;
+    auto sphereAxes = [&](label i)
+    {
+        namespace corr = ::foamDEM::correlations;
+        if (q[i][0] == 0 && q[i][1] == 0 && q[i][2] == 0 && q[i][3] == 0)
+        {
+            corr::randomOrientation(std::uint64_t(atom.tag[i]), q[i]);
+        }
+        double R[3][3];
+        corr::quaternionToMatrix(q[i], R);
+        return tensor
+        (
+            R[0][0], R[0][1], R[0][2],
+            R[1][0], R[1][1], R[1][2],
+            R[2][0], R[2][1], R[2][2]
+        );
+    };
+
     // Free spheres
     forAll(atoms, k)
     {
@@ -549,8 +605,14 @@ void Foam::foamDEM::liggghtsEngine::pull
             }
             p.angularVelocity[j] = vec(atom.omega[i]);
         }
-        if (plan.has(quantity::orientation)) p.orientation[j] = tensor::I;
-        if (plan.has(quantity::type)) p.type[j] = 0;
+        if (plan.has(quantity::orientation))
+        {
+            p.orientation[j] = shapedSpheres_ ? sphereAxes(i) : tensor::I;
+        }
+        if (plan.has(quantity::type))
+        {
+            p.type[j] = shapedSpheres_ ? atom.type[i] : 0;
+        }
         if (plan.has(quantity::id)) p.id[j] = atom.tag[i];
     }
 }

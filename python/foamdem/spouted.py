@@ -1,0 +1,75 @@
+"""Analysis of the spouted bed's signals (tutorials/spoutedBed), as the
+reference reported them (../shared/cases/spouted-bed.md): for each inlet
+velocity plateau, the window without its first and last parts; in it the
+gauge pressure's RMS deviation s = sqrt(sum (x_i - mean)^2/(N - 1)), its
+amplitude spectrum (numpy's FFT) and dominant frequency, and the mean and
+the maximum of the highest particle's height."""
+import numpy as np
+
+
+def window(t0, t1, skip_start, skip_end):
+    """The analysed part of the plateau [t0, t1]."""
+    return t0 + skip_start, t1 - skip_end
+
+
+def select(t, x, w0, w1):
+    m = (t >= w0) & (t <= w1)
+    return t[m], x[m]
+
+
+def rms_deviation(x):
+    """s = sqrt(sum (x_i - mean)^2 / (N - 1))."""
+    x = np.asarray(x, dtype=float)
+    return float(np.sqrt(np.sum((x - x.mean()) ** 2) / (x.size - 1)))
+
+
+def uniform(t, x):
+    """The signal on a uniform grid of its median spacing (linear
+    interpolation; the probe writes every CFD step, so with a fixed step
+    this returns the samples themselves)."""
+    t = np.asarray(t, dtype=float)
+    x = np.asarray(x, dtype=float)
+    dt = float(np.median(np.diff(t)))
+    n = int(np.floor((t[-1] - t[0]) / dt + 1e-9)) + 1
+    tu = t[0] + dt * np.arange(n)
+    return tu, np.interp(tu, t, x), dt
+
+
+def amplitude_spectrum(t, x):
+    """One-sided amplitude spectrum of x - mean: frequencies [Hz] and
+    amplitudes (a sine of amplitude a gives a peak of a at its frequency
+    when the window holds a whole number of periods)."""
+    tu, xu, dt = uniform(t, x)
+    xu = xu - xu.mean()
+    X = np.fft.rfft(xu)
+    f = np.fft.rfftfreq(xu.size, dt)
+    a = 2.0 * np.abs(X) / xu.size
+    return f, a
+
+
+def dominant_frequency(f, a, fmin=0.0):
+    """The frequency of the largest amplitude above fmin (DC excluded)."""
+    m = f > max(fmin, 0.0)
+    if not np.any(m):
+        return float("nan")
+    return float(f[m][np.argmax(a[m])])
+
+
+def plateau_statistics(tp, p, th, h, windows, skip_start, skip_end, fmin=0.0):
+    """Per plateau (velocity, t0, t1): rms of p, dominant frequency, mean and
+    maximum of h, in the window without skip_start and skip_end. Rows of
+    dicts; a plateau whose window holds fewer than 3 samples is left out."""
+    rows = []
+    for u, t0, t1 in windows:
+        w0, w1 = window(t0, t1, skip_start, skip_end)
+        ts, ps = select(tp, p, w0, w1)
+        hs = select(th, h, w0, w1)[1]
+        if ts.size < 3 or hs.size < 1:
+            continue
+        f, a = amplitude_spectrum(ts, ps)
+        rows.append({"u": u, "w0": w0, "w1": w1, "n": int(ts.size),
+                     "rms": rms_deviation(ps),
+                     "fdom": dominant_frequency(f, a, fmin),
+                     "hmean": float(np.mean(hs)), "hmax": float(np.max(hs)),
+                     "f": f, "a": a})
+    return rows

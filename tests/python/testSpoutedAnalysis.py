@@ -1,0 +1,68 @@
+#!/usr/bin/python3
+"""Unit test of python/foamdem/spouted.py (issue 18): synthetic pressure
+signals of known frequencies and RMS, and a height signal of known mean and
+maximum, through the plateau analysis the spoutedBed tutorial uses."""
+import math
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "python"))
+from foamdem import spouted  # noqa: E402
+
+fails = []
+
+
+def check(name, ok, detail):
+    print("%-60s %s  %s" % (name, "ok" if ok else "FAILED", detail))
+    if not ok:
+        fails.append(name)
+
+
+# Two plateaus; in each, the pressure is mean + a1 sin(2 pi f1 t) + a2
+# sin(2 pi f2 t) sampled at 10 kHz, with a1 > a2, so the dominant frequency
+# is f1 and the RMS deviation is sqrt((a1^2 + a2^2)/2) (exact for whole
+# periods; the window here holds whole periods of both)
+dt = 1e-4
+t = np.arange(0.0, 8.0 + dt / 2, dt)
+windows = [(1.3, 0.0, 4.0), (1.9, 4.0, 8.0)]
+spec = [(120.0, 3.0, 2.0, 7.0, 1.0), (80.0, 1.5, 0.5, 11.5, 0.3)]  # mean, f1, a1, f2, a2
+p = np.zeros_like(t)
+h = np.zeros_like(t)
+for (u, t0, t1), (mean, f1, a1, f2, a2) in zip(windows, spec):
+    m = (t >= t0) & (t < t1)
+    p[m] = mean + a1 * np.sin(2 * math.pi * f1 * t[m]) + a2 * np.sin(2 * math.pi * f2 * t[m])
+    h[m] = 0.1 * u + 0.01 * np.sin(2 * math.pi * 0.5 * t[m])
+# the analysed window: 4 s less 0.5 s and 0.25 s = 3.25 s
+rows = spouted.plateau_statistics(t, p, t, h, windows, 0.5, 0.25)
+check("two plateaus analysed", len(rows) == 2, "%d rows" % len(rows))
+for row, (u, t0, t1), (mean, f1, a1, f2, a2) in zip(rows, windows, spec):
+    # 3.25 s windows: frequency resolution 1/3.25 = 0.308 Hz; f1 = 3 and 1.5
+    # Hz are not on the grid, so the peak is the nearest bin
+    df = 1.0 / (row["w1"] - row["w0"])
+    check("plateau %.1f: window %.2f-%.2f s" % (u, row["w0"], row["w1"]),
+          abs(row["w0"] - (t0 + 0.5)) < 1e-12 and abs(row["w1"] - (t1 - 0.25)) < 1e-12, "")
+    check("plateau %.1f: dominant frequency %.3f Hz (%.1f Hz, bin %.3f Hz)"
+          % (u, row["fdom"], f1, df), abs(row["fdom"] - f1) <= df / 2 + 1e-9, "")
+    s_true = math.sqrt((a1 ** 2 + a2 ** 2) / 2)
+    # over a window that is not a whole number of periods the sample RMS
+    # deviates from the ideal by O(a/(f T)): bound 3 %
+    check("plateau %.1f: rms %.4f (%.4f)" % (u, row["rms"], s_true),
+          abs(row["rms"] / s_true - 1) < 0.03, "")
+    hs = 0.1 * u + 0.01 * np.sin(2 * math.pi * 0.5 * t[(t >= row["w0"]) & (t <= row["w1"])])
+    check("plateau %.1f: height mean %.5f, max %.5f" % (u, row["hmean"], row["hmax"]),
+          abs(row["hmean"] - hs.mean()) < 1e-12 and abs(row["hmax"] - hs.max()) < 1e-12, "")
+
+# rms_deviation is the N - 1 form: for (1, 2, 3, 4) it is sqrt(5/3)
+check("rms_deviation of 1..4 = sqrt(5/3)",
+      abs(spouted.rms_deviation([1, 2, 3, 4]) - math.sqrt(5 / 3)) < 1e-15, "")
+# a sine of amplitude 2 over whole periods: spectrum peak 2 at its frequency
+tt = np.arange(0, 2.0, 1e-3)
+f, a = spouted.amplitude_spectrum(tt, 5 + 2 * np.sin(2 * math.pi * 25 * tt))
+k = int(np.argmax(a[1:])) + 1
+check("spectrum peak of 2 sin(2 pi 25 t): %.4f at %.2f Hz" % (a[k], f[k]),
+      abs(f[k] - 25) < 1e-9 and abs(a[k] - 2) < 1e-9, "")
+
+print("PASS" if not fails else "FAIL: %s" % ", ".join(fails))
+sys.exit(1 if fails else 0)

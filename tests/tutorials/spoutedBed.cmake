@@ -1,0 +1,18 @@
+# spoutedBed tests (FOAMDEM_WORK and TUT come from integration.cmake)
+
+# CI variant (1 713 shaped spheres of the 35 % set, schedule compressed to
+# 0.44 s, k-epsilon): the inlet follows the schedule table (1e-6 m/s), the
+# pressure probe has a sample every CFD step, the plateau analysis gives
+# finite values for all five plateaus, no particle is lost and the mass is
+# constant (postprocess.py --ci)
+add_test(NAME spoutedBed.ci
+    COMMAND ${TUT} spoutedBed ${FOAMDEM_WORK}/spoutedBed -ci)
+set_tests_properties(spoutedBed.ci PROPERTIES
+    LABELS "integration;tutorial" TIMEOUT 900)
+
+# The same at np 2: the DEM and the mesh cut across the width through the
+# spout; the shaped spheres' orientations move with them between ranks
+add_test(NAME parallel.spoutedBed.ci
+    COMMAND ${TUT} spoutedBed ${FOAMDEM_WORK}/spoutedBed_np2 -ci -np 2)
+set_tests_properties(parallel.spoutedBed.ci PROPERTIES
+    LABELS "integration;tutorial;parallel" TIMEOUT 900 PROCESSORS 2)

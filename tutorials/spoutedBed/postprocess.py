@@ -1,0 +1,226 @@
+#!/usr/bin/python3
+"""spoutedBed post-processing: per inlet-velocity plateau, the gauge
+pressure's RMS deviation and dominant frequency and the maximum particle
+height (python/foamdem/spouted.py), as the reference reported them; plots
+and particle snapshots; checks.
+
+Reads postProcessing/pressureProbe/*/p (every CFD step),
+postProcessing/inletVelocity/*/surfaceFieldValue.dat, DEM/post/height.dat
+(100 Hz: time, highest particle centre, particle count, total mass),
+DEM/post/schedule.dat and DEM/post/particles.dat (prepare.py), the dumps
+DEM/post/dump/snap.*.txt.
+
+Writes results/<set>/plateaus.dat (inletVelocity rms_Pa
+dominantFrequency_Hz maxHeightMean_m maxHeightMax_m), results/summary.dat,
+results/<set>/{pressure,height,spectra}.png and snapshot_<U>.png.
+
+Each plateau's window drops its first 1/8 and last 1/16 (0.5 s and 0.25 s
+of the reference's 4 s plateaus); the first plateau counts from the end of
+the ramp. The dominant frequency is searched above --fmin Hz.
+
+--ci        CI checks: the schedule is applied, the probe is written every
+            CFD step, the analysis gives finite values for every plateau,
+            no particle is lost and the mass is constant.
+--no-plot   skip the PNGs
+"""
+import argparse
+import glob
+import os
+import re
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.environ.get("FOAMDEM_DIR", "../.."), "python"))
+from foamdem import caseio, spouted  # noqa: E402
+
+
+def concat(pattern, usecols=None):
+    """Rows of all time directories' files (continued runs), by time, the
+    later segment winning where they overlap."""
+    parts = []
+    for path in sorted(glob.glob(pattern), key=lambda p: float(p.split(os.sep)[-2])):
+        d = np.loadtxt(path, comments="#", usecols=usecols, ndmin=2)
+        if d.size:
+            parts.append(d)
+    if not parts:
+        return None
+    out = parts[0]
+    for d in parts[1:]:
+        out = np.vstack([out[out[:, 0] < d[0, 0]], d])
+    return out
+
+
+def read_vector_column(path):
+    """surfaceFieldValue.dat of a vector: time and the three components."""
+    rows = []
+    for line in open(path):
+        if line.startswith("#") or not line.strip():
+            continue
+        nums = re.findall(r"[-+0-9.eE]+", line.replace("(", " ").replace(")", " "))
+        rows.append([float(v) for v in nums[:4]])
+    return np.array(rows)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--ci", action="store_true")
+    ap.add_argument("--no-plot", action="store_true")
+    ap.add_argument("--fmin", type=float, default=0.0)
+    args = ap.parse_args()
+    case = "."
+    checks = []
+
+    head = open("DEM/post/particles.dat").readline()
+    set_name = re.search(r"# set (\w+)", head).group(1)
+    parts = np.genfromtxt("DEM/post/particles.dat", comments="#", dtype=None,
+                          encoding=None)
+    n_inserted = int(sum(int(r[4]) for r in parts))
+    windows = [tuple(r) for r in np.loadtxt("DEM/post/schedule.dat", ndmin=2)]
+    hold = windows[0][2] - windows[0][1]
+    rho = caseio.foam_scalar("constant/transportProperties", "rho")
+    setup = open("DEM/post/setupDict").read()
+    dt_cfd = float(re.search(r"(?m)^deltaT\s+([-+0-9.eE]+);", setup).group(1))
+
+    probe = concat("postProcessing/pressureProbe/*/p")
+    tp, pp = probe[:, 0], rho * probe[:, 1]            # gauge pressure [Pa]
+    hd = np.loadtxt("DEM/post/height.dat", comments="#", ndmin=2)
+    th, hh, nh, mh = hd[:, 0], hd[:, 1], hd[:, 2], hd[:, 3]
+
+    rows = spouted.plateau_statistics(tp, pp, th, hh, windows, hold / 8, hold / 16,
+                                      args.fmin)
+    out = os.path.join("results", set_name)
+    os.makedirs(out, exist_ok=True)
+    with open(os.path.join(out, "plateaus.dat"), "w") as f:
+        f.write("# spoutedBed, set %s%s: per inlet velocity plateau, in its window"
+                " (first 1/8 and last 1/16 dropped)\n" % (set_name, " (CI)" if args.ci else ""))
+        f.write("# gauge pressure at the probe (rho p, p = 0 at the outlet, no"
+                " hydrostatic head): RMS deviation (N - 1) and dominant frequency of its"
+                " amplitude spectrum; highest particle centre above the inlet plane:"
+                " mean and maximum\n")
+        f.write("# inletVelocity rms_Pa dominantFrequency_Hz maxHeightMean_m maxHeightMax_m\n")
+        for r in rows:
+            f.write("%.3g %.6g %.6g %.6g %.6g\n" % (r["u"], r["rms"], r["fdom"],
+                                                  r["hmean"], r["hmax"]))
+
+    summary = [("set", set_name), ("particlesInserted", "%d" % n_inserted),
+               ("cfdStep_s", "%.6g" % dt_cfd),
+               ("probeSamples", "%d" % tp.size)]
+    for r in rows:
+        summary.append(("plateau_%.3g_m_s (window %.4g-%.4g s, %d samples)"
+                        % (r["u"], r["w0"], r["w1"], r["n"]),
+                        "rms %.4g Pa, f %.4g Hz, hmean %.4g m, hmax %.4g m"
+                        % (r["rms"], r["fdom"], r["hmean"], r["hmax"])))
+
+    # Checks (all runs): particles and mass conserved
+    checks.append(("no particle lost (count = inserted at every 100 Hz sample)",
+                   bool(np.all(nh == n_inserted))))
+    dm = float(np.max(np.abs(mh / mh[0] - 1)))
+    summary.append(("massMaxRelChange", "%.3e" % dm))
+    checks.append(("mass constant (1e-12)", dm < 1e-12))
+    if args.ci:
+        # schedule applied: the inlet's area-averaged U against the table
+        iv = None
+        for path in sorted(glob.glob("postProcessing/inletVelocity/*/surfaceFieldValue.dat")):
+            d = read_vector_column(path)
+            iv = d if iv is None else np.vstack([iv, d])
+        table = re.search(r"inletTable\s*\((.*?)\n\);", setup, flags=re.S).group(1)
+        tab = np.array([[float(v) for v in re.findall(r"[-+0-9.eE]+", line)][::3][:1]
+                        + [float(re.findall(r"[-+0-9.eE]+", line)[-1])]
+                        for line in table.strip().splitlines()])
+        want = np.interp(iv[:, 0], tab[:, 0], tab[:, 1])
+        err = float(np.max(np.abs(iv[:, 3] - want)))
+        summary.append(("inletVelocity_maxError_m_s", "%.3e" % err))
+        checks.append(("schedule applied (inlet U within 1e-6 m/s of the table)", err < 1e-6))
+        dts = np.diff(tp)
+        rate_ok = bool(np.all(np.abs(dts - dt_cfd) < 1e-6 * dt_cfd + 1e-12))
+        summary.append(("probeInterval_s", "%.6g-%.6g" % (dts.min(), dts.max())))
+        checks.append(("probe written every CFD step", rate_ok))
+        finite = len(rows) == len(windows) and all(
+            np.isfinite(r["rms"]) and np.isfinite(r["fdom"]) and np.isfinite(r["hmax"])
+            for r in rows)
+        checks.append(("analysis gives finite values for every plateau", finite))
+
+    if not args.no_plot:
+        plots(out, tp, pp, th, hh, rows, windows)
+    ok = all(c for _, c in checks)
+    summary += [("check: " + n, "ok" if c else "FAILED") for n, c in checks]
+    summary.append(("pass", "yes" if ok else "no"))
+    caseio.write_summary(".", summary)
+    for r in rows:
+        print("plateau %.3g m/s: rms %.4g Pa, dominant %.4g Hz, max height mean %.4g m,"
+              " max %.4g m" % (r["u"], r["rms"], r["fdom"], r["hmean"], r["hmax"]))
+    for n, c in checks:
+        print("%-60s %s" % (n, "ok" if c else "FAILED"))
+    return 0 if ok else 1
+
+
+def plots(out, tp, pp, th, hh, rows, windows):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(2, 1, figsize=(8, 5), sharex=True)
+    ax[0].plot(tp, pp, lw=0.3)
+    ax[0].set_ylabel("gauge pressure at the probe [Pa]")
+    ax[1].plot(th, hh, lw=0.6)
+    ax[1].set_ylabel("highest particle [m]")
+    ax[1].set_xlabel("t [s]")
+    for r in rows:
+        for a in ax:
+            a.axvspan(r["w0"], r["w1"], color="0.9", zorder=-1)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "timeSeries.png"), dpi=90)
+    plt.close(fig)
+
+    fig, ax = plt.subplots(figsize=(7, 4))
+    for r in rows:
+        ax.plot(r["f"], r["a"], lw=0.8, label="%.3g m/s (%.3g Hz)" % (r["u"], r["fdom"]))
+    ax.set_xlim(0, 30)
+    ax.set_xlabel("f [Hz]")
+    ax.set_ylabel("amplitude [Pa]")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "spectra.png"), dpi=90)
+    plt.close(fig)
+
+    # Snapshots: the dump nearest each plateau's middle
+    dumps = {}
+    for path in glob.glob("DEM/post/dump/snap.*.txt"):
+        dumps[int(path.split(".")[-2])] = path
+    if not dumps:
+        return
+    dt = float(re.search(r"variable demDt\s+equal\s+([-+0-9.eE]+)",
+                         open("DEM/post/setup.lig").read()).group(1))
+    steps = np.array(sorted(dumps))
+    for u, t0, t1 in windows:
+        k = steps[np.argmin(np.abs(steps * dt - 0.5 * (t0 + t1)))]
+        d = read_dump(dumps[k])
+        if d is None:
+            continue
+        fig, ax = plt.subplots(figsize=(5, 5))
+        sc = ax.scatter(d[:, 0], d[:, 2], c=d[:, 2], s=1, cmap="viridis")
+        ax.set_aspect("equal")
+        ax.set_xlabel("x [m]")
+        ax.set_ylabel("height above the inlet [m]")
+        ax.set_title("%.3g m/s, t = %.3g s" % (u, k * dt))
+        fig.colorbar(sc, ax=ax, label="height [m]")
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, "snapshot_%.3g.png" % u), dpi=80)
+        plt.close(fig)
+
+
+def read_dump(path):
+    lines = open(path).read().splitlines()
+    try:
+        i = next(k for k, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
+    except StopIteration:
+        return None
+    cols = lines[i].split()[2:]
+    data = np.loadtxt(lines[i + 1:], ndmin=2)
+    return data[:, [cols.index("x"), cols.index("y"), cols.index("z")]]
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,303 @@
+#!/usr/bin/python3
+"""spoutedBed set-up: from constant/spoutedBedProperties, derive the cone,
+the mesh, the particles of the selected set (production representation:
+one sphere per particle, see README), the DEM and CFD steps and the inlet
+schedule, and write
+  DEM/post/setup.lig     LIGGGHTS variables and per-type commands
+  DEM/post/walls.stl     the cone's and upper section's side walls
+  DEM/post/setupDict     blockMesh, controlDict and 0/U entries
+  constant/hoelzerSommerfeldShapes  the drag model's shape table
+  DEM/post/particles.dat one line per shape: what the sphere stands for
+
+--ci          the CI variant (ci* entries)
+--set NAME    override the dictionary's set
+--np N        DEM processor grid (N 1 1) and the CFD decomposition
+--continue    start from the latest time with a DEM restart
+"""
+import argparse
+import math
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.join(os.environ.get("FOAMDEM_DIR", "../.."), "python"))
+from foamdem import caseio  # noqa: E402
+
+PROPS = "constant/spoutedBedProperties"
+
+
+def read_props(case):
+    text = caseio._strip_comments(open(os.path.join(case, PROPS)).read())
+    props = {}
+    for m in re.finditer(r"(?m)^\s*(\w+)\s+([-+0-9.eE]+)\s*;", text):
+        props[m.group(1)] = float(m.group(2))
+    m = re.search(r"(?m)^\s*set\s+(\w+)\s*;", text)
+    props["set"] = m.group(1)
+    m = re.search(r"plateaus\s*\(([^)]*)\)", text)
+    props["plateaus"] = [float(v) for v in m.group(1).split()]
+    m = re.search(r"shapes\s*\((.*?)\n\)\s*;", text, flags=re.S)
+    shapes = []
+    for row in re.findall(r"\(([^()]*)\)", m.group(1)):
+        f = row.split()
+        shapes.append({"name": f[0], "kind": f[1], "length": float(f[2]),
+                       "width": float(f[3]), "thickness": float(f[4]),
+                       "mass": float(f[5])})
+    props["shapes"] = shapes
+    m = re.search(r"sets\s*\{(.*?)\}", text, flags=re.S)
+    props["sets"] = {k: [float(v) for v in vals.split()]
+                     for k, vals in re.findall(r"(\w+)\s*\(([^)]*)\)\s*;", m.group(1))}
+    return props
+
+
+def ideal_volume(s):
+    if s["kind"] == "plate":
+        return s["length"] * s["width"] * s["thickness"]
+    D, L = s["width"], s["length"]
+    return math.pi * D * D / 4 * (L - D) + math.pi * D ** 3 / 6
+
+
+def rayleigh_time(r, rho, E, nu):
+    G = E / (2 * (1 + nu))
+    return math.pi * r * math.sqrt(rho / G) / (0.1631 * nu + 0.8766)
+
+
+def schedule(props, ci):
+    """Inlet velocity table (t, U) and the plateaus' windows: a linear ramp
+    to the first plateau over rampTime, then each plateau for plateauTime
+    (a step change between plateaus, as a ramp over 1e-6 plateauTime)."""
+    ramp = props["ciRampTime" if ci else "rampTime"]
+    hold = props["ciPlateauTime" if ci else "plateauTime"]
+    u = props["plateaus"]
+    jump = 1e-6 * hold
+    table = [(0.0, 0.0), (ramp, u[0])]
+    windows = []
+    for i, v in enumerate(u):
+        t0, t1 = ramp + i * hold, ramp + (i + 1) * hold
+        windows.append((v, t0, t1))
+        table.append((t1, v))
+        if i + 1 < len(u):
+            table.append((t1 + jump, u[i + 1]))
+    return table, windows
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--ci", action="store_true")
+    ap.add_argument("--set", default=None)
+    ap.add_argument("--np", type=int, default=1)
+    ap.add_argument("--continue", dest="cont", action="store_true")
+    args = ap.parse_args()
+    case = "."
+    P = read_props(case)
+
+    def p(key):
+        return P["ci" + key[0].upper() + key[1:]] if args.ci and \
+            ("ci" + key[0].upper() + key[1:]) in P else P[key]
+
+    set_name = args.set or P["set"]
+    if set_name not in P["sets"]:
+        sys.exit("prepare.py: unknown set '%s' in %s; valid sets: %s"
+                 % (set_name, PROPS, " ".join(sorted(P["sets"]))))
+    grams = P["sets"][set_name]
+    if len(grams) != len(P["shapes"]):
+        sys.exit("prepare.py: set %s lists %d masses for %d shapes"
+                 % (set_name, len(grams), len(P["shapes"])))
+
+    # Geometry (z up, x across, y through the thickness)
+    half = math.radians(P["coneAngle"] / 2)
+    w0, w1 = P["inletWidth"], p("topWidth")
+    Hc = (w1 - w0) / 2 / math.tan(half)
+    Hu = p("upperHeight")
+    T = P["thickness"]
+    # cone cells: geometric growth from firstCellHeight to about lastConeCell
+    a, b = P["firstCellHeight"], P["lastConeCell"]
+    r = (Hc - a) / (Hc - b)
+    nCone = max(2, int(round(1 + math.log(b / a) / math.log(r))))
+    grading = b / a
+
+    # Particles: one sphere per particle, of the ideal shape's volume and
+    # the table's mass (density = mass / ideal volume)
+    frac = P["ciFraction"] if args.ci else 1.0
+    E, nu = P["youngsModulus"], P["poissonsRatio"]
+    rows, dt_r = [], []
+    for t, (s, g) in enumerate(zip(P["shapes"], grams), start=1):
+        V = ideal_volume(s)
+        dv = (6 * V / math.pi) ** (1 / 3)
+        rho = s["mass"] / V
+        n = int(round(frac * g * 1e-3 / s["mass"]))
+        rows.append(dict(s, type=t, grams=g, volume=V, dv=dv, rho=rho, n=n,
+                         massRatio=s["mass"] / (P["rhoApparent"] * V)))
+        if n > 0:
+            dt_r.append(rayleigh_time(dv / 2, rho, E, nu))
+    N = sum(row["n"] for row in rows)
+    # The DEM step: at most rayleighFraction of the smallest Rayleigh time,
+    # and such that the write interval is a whole number of CFD steps (so
+    # that the fields and the DEM restarts are written at the same times)
+    nc = int(P["couplingInterval"])
+    n_write = int(math.ceil(p("writeInterval") / (nc * P["rayleighFraction"] * min(dt_r))))
+    dt_cfd = p("writeInterval") / n_write
+    dt = dt_cfd / nc
+
+    table, windows = schedule(P, args.ci)
+    t_end = table[-1][0]
+
+    post = os.path.join(case, "DEM", "post")
+    for d in (post, os.path.join(post, "restart"), os.path.join(post, "dump")):
+        os.makedirs(d, exist_ok=True)
+
+    # Side walls (STL): the two cone planes and the two upper walls
+    def quad(f, p0, p1, p2, p3):
+        for tri in ((p0, p1, p2), (p0, p2, p3)):
+            f.write("  facet normal 0 0 0\n    outer loop\n")
+            for v in tri:
+                f.write("      vertex %.9g %.9g %.9g\n" % v)
+            f.write("    endloop\n  endfacet\n")
+    with open(os.path.join(post, "walls.stl"), "w") as f:
+        f.write("solid walls\n")
+        for s_ in (-1, 1):
+            xb, xt = s_ * w0 / 2, s_ * w1 / 2
+            quad(f, (xb, 0, 0), (xb, T, 0), (xt, T, Hc), (xt, 0, Hc))
+            quad(f, (xt, 0, Hc), (xt, T, Hc), (xt, T, Hc + Hu), (xt, 0, Hc + Hu))
+        f.write("endsolid walls\n")
+
+    present = [row for row in rows if row["n"] > 0]
+    steps = lambda t: max(1, int(round(t / dt)))  # noqa: E731
+    # insertion region: inside the cone above its bottom
+    z_ins0 = 0.02
+    x_ins = w0 / 2 + z_ins0 * math.tan(half) - 0.002
+    z_ins1 = min(Hc, z_ins0 + 0.45 if not args.ci else z_ins0 + 0.15)
+    lig = {
+        "nTypes": len(rows) + 1, "wallType": len(rows) + 1,
+        "xlo": -w1 / 2 - 0.001, "xhi": w1 / 2 + 0.001, "ylo": 0.0, "yhi": T,
+        "zlo": -0.001, "zhi": Hc + Hu,
+        "youngsModulus": E, "poissonsRatio": nu,
+        "restitution": P["restitution"], "friction": P["friction"],
+        "wallFriction": P["wallFriction"], "rollingFriction": P["rollingFriction"],
+        "characteristicVelocity": P["characteristicVelocity"],
+        "demDt": dt, "nParticles": N,
+        "insXlo": -x_ins, "insXhi": x_ins, "insYlo": 0.0005, "insYhi": T - 0.0005,
+        "insZlo": z_ins0, "insZhi": z_ins1,
+        "settleSteps": steps(p("settleTime")),
+        "heightSteps": steps(P["heightInterval"]),
+        "writeSteps": steps(p("writeInterval")),
+        "nProcX": args.np,
+    }
+    start_time, restart, fresh = "0", "DEM/post/filled.restart", 1
+    if args.cont:
+        best = None
+        for d in caseio.time_dirs(case):
+            step = int(round(float(d) / dt))
+            if float(d) > 0 and os.path.exists(
+                    os.path.join(post, "restart", "coupled.%d.restart" % step)):
+                best = (d, step)
+        if best is None:
+            sys.exit("prepare.py --continue: no time directory with a matching"
+                     " DEM restart (DEM/post/restart/coupled.<step>.restart)")
+        start_time, restart, fresh = best[0], \
+            "DEM/post/restart/coupled.%d.restart" % best[1], 0
+    with open(os.path.join(post, "setup.lig"), "w") as f:
+        f.write("# Generated by Allrun (prepare.py) from %s; do not edit\n" % PROPS)
+        for k, v in lig.items():
+            f.write("variable %-22s equal %.12g\n" % (k, v))
+        f.write("variable %-22s equal %d\n" % ("fresh", fresh))
+        f.write("variable %-22s string %s\n" % ("restartFile", restart))
+    # Templates and the distribution (number fractions, exact)
+    seeds = [15485863, 15485867, 32452843, 32452867, 49979687, 49979693,
+             67867967, 67867979, 86028121, 86028157]
+    with open(os.path.join(post, "templates.lig"), "w") as f:
+        f.write("# Generated by prepare.py: one sphere template per shape of set %s\n"
+                % set_name)
+        dist = []
+        for k, row in enumerate(present):
+            f.write("fix pts%d all particletemplate/sphere %d atom_type %d "
+                    "density constant %.10g radius constant %.10g\n"
+                    % (row["type"], seeds[k], row["type"], row["rho"], row["dv"] / 2))
+            dist.append("pts%d %.12g" % (row["type"], row["n"] / N))
+        f.write("fix pdd all particledistribution/discrete/numberbased %d %d %s\n"
+                % (seeds[len(present)], len(present), " ".join(dist)))
+        f.write("variable insertSeed equal %d\n" % seeds[len(present) + 1])
+    # Materials: types 1..6 the shapes, the last type the walls; friction
+    # 1.0 between particles, 0.9 with the walls; one restitution and one
+    # rolling friction for all pairs
+    nt = len(rows) + 1
+    with open(os.path.join(post, "materials.lig"), "w") as f:
+        f.write("# Generated by prepare.py: %d particle types + the wall (type %d)\n"
+                % (len(rows), nt))
+        f.write("fix m1 all property/global youngsModulus peratomtype %s\n"
+                % " ".join(["%.6g" % E] * nt))
+        f.write("fix m2 all property/global poissonsRatio peratomtype %s\n"
+                % " ".join(["%.6g" % nu] * nt))
+
+        def matrix(v_pp, v_pw):
+            return " ".join("%.6g" % (v_pw if (i == nt or j == nt) else v_pp)
+                            for i in range(1, nt + 1) for j in range(1, nt + 1))
+        f.write("fix m3 all property/global coefficientRestitution peratomtypepair %d %s\n"
+                % (nt, matrix(P["restitution"], P["restitution"])))
+        f.write("fix m4 all property/global coefficientFriction peratomtypepair %d %s\n"
+                % (nt, matrix(P["friction"], P["wallFriction"])))
+        f.write("fix m5 all property/global coefficientRollingFriction peratomtypepair %d %s\n"
+                % (nt, matrix(P["rollingFriction"], P["rollingFriction"])))
+        f.write("fix m6 all property/global characteristicVelocity scalar %.6g\n"
+                % P["characteristicVelocity"])
+    with open(os.path.join(post, "particles.dat"), "w") as f:
+        f.write("# set %s%s: one sphere per particle, d = d_v of the ideal shape,"
+                " density = table mass / ideal volume\n" % (set_name, " (CI)" if args.ci else ""))
+        f.write("# type name kind grams count mass_kg idealVolume_m3 d_v_m density_kg_m3"
+                " massOverIdealMass\n")
+        for row in rows:
+            f.write("%d %s %s %.4g %d %.6e %.6e %.6e %.2f %.3f\n"
+                    % (row["type"], row["name"], row["kind"], row["grams"], row["n"],
+                       row["mass"], row["volume"], row["dv"], row["rho"], row["massRatio"]))
+
+    # Drag model shape table, by atom type
+    with open(os.path.join(case, "constant", "hoelzerSommerfeldShapes"), "w") as f:
+        f.write("// Generated by prepare.py from %s: the drag model's shape per"
+                " atom type; do not edit\n" % PROPS)
+        for row in rows:
+            if row["kind"] == "plate":
+                f.write('"%d" { shape plate; length %.6g; width %.6g; thickness %.6g; }\n'
+                        % (row["type"], row["length"], row["width"], row["thickness"]))
+            else:
+                f.write('"%d" { shape spherocylinder; diameter %.6g; length %.6g; }\n'
+                        % (row["type"], row["width"], row["length"]))
+
+    with open(os.path.join(post, "setupDict"), "w") as f:
+        f.write("// Generated by Allrun (prepare.py) from %s; do not edit\n" % PROPS)
+        geo = {"xb": w0 / 2, "mxb": -w0 / 2, "xt": w1 / 2, "mxt": -w1 / 2,
+               "T": T, "Hc": Hc, "Htop": Hc + Hu, "coneGrading": grading,
+               "probeZ": P["probeHeight"], "probeY": T / 2,
+               "deltaT": dt_cfd, "endTime": t_end, "writeInterval": p("writeInterval")}
+        for k, v in geo.items():
+            f.write("%-16s %.12g;\n" % (k, v))
+        f.write("%-16s %d;\n" % ("nWidth", int(p("nWidth"))))
+        f.write("%-16s %d;\n" % ("nThickness", int(P["nThickness"])))
+        f.write("%-16s %d;\n" % ("nCone", nCone))
+        f.write("%-16s %d;\n" % ("nUpper", int(p("nUpper"))))
+        f.write("%-16s %d;\n" % ("couplingInterval", nc))
+        f.write("%-16s %s;\n" % ("startTime", start_time))
+        f.write("inletTable\n(\n")
+        for t, v in table:
+            f.write("    (%.9g (0 0 %.9g))\n" % (t, v))
+        f.write(");\n")
+        f.write("%-16s %.12g;\n" % ("mixingLength", 0.07 * P["hydraulicDiameter"]))
+        f.write("%-16s %.12g;\n" % ("intensity", P["intensity"]))
+        f.write("%-16s (%d 1 1);\n" % ("decomposition", args.np))
+    with open(os.path.join(post, "schedule.dat"), "w") as f:
+        f.write("# plateau velocity [m/s], window start [s], window end [s]\n")
+        for v, t0, t1 in windows:
+            f.write("%.6g %.9g %.9g\n" % (v, t0, t1))
+
+    print("spoutedBed%s: set %s, %d particles (%s), cone %.4g m tall (%d cells,"
+          " grading %.3g), upper %.4g m (%d cells), %d x %d cells across; DEM step"
+          " %.3g s (%.0f %% of the smallest Rayleigh time %.3g s), CFD step %.3g s;"
+          " schedule to %.4g s; start %s"
+          % (" (CI)" if args.ci else "", set_name, N,
+             ", ".join("%s %d" % (row["name"], row["n"]) for row in present),
+             Hc, nCone, grading, Hu, int(p("nUpper")), int(p("nWidth")),
+             int(P["nThickness"]), dt, 100 * dt / min(dt_r), min(dt_r), dt_cfd,
+             t_end, start_time))
+
+
+if __name__ == "__main__":
+    main()

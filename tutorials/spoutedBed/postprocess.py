@@ -133,8 +133,12 @@ def main():
         err = float(np.max(np.abs(iv[:, 3] - want)))
         summary.append(("inletVelocity_maxError_m_s", "%.3e" % err))
         checks.append(("schedule applied (inlet U within 1e-6 m/s of the table)", err < 1e-6))
+        # every CFD step: the sample count is the step count, and the
+        # spacing is the step to the probe file's printed precision
         dts = np.diff(tp)
-        rate_ok = bool(np.all(np.abs(dts - dt_cfd) < 1e-6 * dt_cfd + 1e-12))
+        n_steps = int(round((tp[-1] - tp[0]) / dt_cfd)) + 1
+        rate_ok = tp.size == n_steps and bool(np.all(np.abs(dts - dt_cfd) < 1e-3 * dt_cfd))
+        summary.append(("probeSamples_expected", "%d" % n_steps))
         summary.append(("probeInterval_s", "%.6g-%.6g" % (dts.min(), dts.max())))
         checks.append(("probe written every CFD step", rate_ok))
         finite = len(rows) == len(windows) and all(

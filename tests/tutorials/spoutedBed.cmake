@@ -8,7 +8,8 @@
 add_test(NAME spoutedBed.ci
     COMMAND ${TUT} spoutedBed ${FOAMDEM_WORK}/spoutedBed -ci)
 set_tests_properties(spoutedBed.ci PROPERTIES
-    LABELS "integration;tutorial" TIMEOUT 900)
+    LABELS "integration;tutorial" TIMEOUT 900
+    FIXTURES_SETUP spoutedBed_ci)
 
 # The same at np 2: the DEM and the mesh cut across the width through the
 # spout; the shaped spheres' orientations move with them between ranks
@@ -29,3 +30,13 @@ add_test(NAME shapedSpheres.settlingPlate
             ${FOAMDEM_WORK}/shapedSpheres_settlingPlate)
 set_tests_properties(shapedSpheres.settlingPlate PROPERTIES
     LABELS "integration" TIMEOUT 300)
+
+# Restart: a copy of the CI run with its writes after 0.2 s removed,
+# continued from the fields and the DEM restart at 0.2 s to the end
+# (0.44 s); the checks pass on the joined segments (the probe files and
+# the 100 Hz heights are joined, the later segment replacing the earlier)
+add_test(NAME spoutedBed.continue
+    COMMAND sh -c "rm -rf ${FOAMDEM_WORK}/spoutedBed_continue && cp -r ${FOAMDEM_WORK}/spoutedBed ${FOAMDEM_WORK}/spoutedBed_continue && cd ${FOAMDEM_WORK}/spoutedBed_continue && rm -rf 0.3 0.4 && ./Allrun -ci -continue")
+set_tests_properties(spoutedBed.continue PROPERTIES
+    LABELS "integration;tutorial" TIMEOUT 900
+    FIXTURES_REQUIRED spoutedBed_ci)

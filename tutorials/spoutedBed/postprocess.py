@@ -51,6 +51,18 @@ def concat(pattern, usecols=None):
     return out
 
 
+def latest_segments(d):
+    """Rows of a file that continued runs append to: where the time goes
+    back (a run continued from an earlier write), the later rows replace
+    the earlier ones from that time on."""
+    keep = []
+    for row in d:
+        while keep and keep[-1][0] >= row[0] - 1e-12:
+            keep.pop()
+        keep.append(row)
+    return np.array(keep)
+
+
 def read_vector_column(path):
     """surfaceFieldValue.dat of a vector: time and the three components."""
     rows = []
@@ -85,7 +97,7 @@ def main():
 
     probe = concat("postProcessing/pressureProbe/*/p")
     tp, pp = probe[:, 0], rho * probe[:, 1]            # gauge pressure [Pa]
-    hd = np.loadtxt("DEM/post/height.dat", comments="#", ndmin=2)
+    hd = latest_segments(np.loadtxt("DEM/post/height.dat", comments="#", ndmin=2))
     th, hh, nh, mh = hd[:, 0], hd[:, 1], hd[:, 2], hd[:, 3]
 
     rows = spouted.plateau_statistics(tp, pp, th, hh, windows, hold / 8, hold / 16,

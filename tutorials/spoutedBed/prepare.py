@@ -186,7 +186,10 @@ def main():
     start_time, restart, fresh = "0", "DEM/post/filled.restart", 1
     if args.cont:
         best = None
-        for d in caseio.time_dirs(case):
+        # a decomposed run writes its times in processor0/
+        where = os.path.join(case, "processor0") \
+            if os.path.isdir(os.path.join(case, "processor0")) else case
+        for d in caseio.time_dirs(where):
             step = int(round(float(d) / dt))
             if float(d) > 0 and os.path.exists(
                     os.path.join(post, "restart", "coupled.%d.restart" % step)):

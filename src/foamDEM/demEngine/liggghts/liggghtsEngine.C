@@ -25,6 +25,7 @@
 #include "multisphere.h"
 #include "custom_value_tracker.h"
 #include "scalar_container.h"
+#include "vector_container.h"
 
 #include "liftTorqueCorrelations.H"
 
@@ -249,6 +250,27 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
                 << exit(FatalIOError);
         }
         implicitDrag_ = false;
+
+        // The body's held coupling force and torque must move with it when
+        // it changes rank: LIGGGHTS declares them 'comm_none', which its
+        // body exchange does not pack (a migrating body would lose them
+        // until the next coupling step). Let the exchange carry them.
+        LAMMPS_NS::Multisphere& ms = multisphere_->data();
+        for (const char* name : {"dragforce_cm", "hdtorque_cm"})
+        {
+            auto* c = ms.prop().getElementProperty
+                <LAMMPS_NS::VectorContainer<double, 3>>(name);
+            if (!c)
+            {
+                FatalErrorInFunction
+                    << "fix multisphere has no body property " << name
+                    << " (LIGGGHTS 3.8 has it)." << exit(FatalError);
+            }
+            c->setProperties
+            (
+                name, "comm_exchange_borders", "frame_invariant", "restart_no"
+            );
+        }
         Info<< "    LIGGGHTS: multisphere bodies coupled as single particles,"
             << " explicit DEM drag integration" << endl;
     }
@@ -684,7 +706,8 @@ void Foam::foamDEM::liggghtsEngine::push
         // Bodies: the force and torque go to the body itself (fix
         // multisphere adds dragforce_cm and hdtorque_cm to the body's sums
         // every DEM step; both are per-body data, exchanged with the body
-        // between ranks). Its spheres, wherever they are, get nothing.
+        // between ranks: see the constructor). Its spheres, wherever they
+        // are, get nothing.
         LAMMPS_NS::Multisphere& ms = multisphere_->data();
         double** fBody = ms.extract_double_vector("dragforce_cm");
         double** tBody = ms.extract_double_vector("hdtorque_cm");

@@ -30,3 +30,21 @@ Foam::autoPtr<Foam::foamDEM::forceModel> Foam::foamDEM::forceModel::New
         coupling
     );
 }
+
+
+Foam::label Foam::foamDEM::forceModel::typeOfEntry
+(
+    const dictionary& dict,
+    const entry& e
+)
+{
+    label type = -1;
+    if (!readLabel(e.keyword(), type) || type < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entries of '" << dict.dictName() << "' are named by the"
+            << " particle type (\"1\", \"2\", ...), got '" << e.keyword()
+            << "'" << exit(FatalIOError);
+    }
+    return type;
+}

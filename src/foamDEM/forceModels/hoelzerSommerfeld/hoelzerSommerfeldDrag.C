@@ -47,14 +47,7 @@ Foam::foamDEM::hoelzerSommerfeldDrag::hoelzerSommerfeldDrag
     for (const entry& e : shapesDict)
     {
         const dictionary& sd = e.dict();
-        label type = -1;
-        if (!readLabel(e.keyword(), type) || type < 1)
-        {
-            FatalIOErrorInFunction(shapesDict)
-                << "Shape entries are named by the multisphere body type"
-                << " (1, 2, ...), got '" << e.keyword() << "'"
-                << exit(FatalIOError);
-        }
+        const label type = typeOfEntry(shapesDict, e);
         const word shape(sd.get<word>("shape"));
         shapeSpec spec;
         if (shape == "spherocylinder")

@@ -46,14 +46,7 @@ Foam::foamDEM::pitchingTorque::pitchingTorque
     const dictionary& axes = dict.subDict("axes");
     for (const entry& e : axes)
     {
-        label type = -1;
-        if (!readLabel(e.keyword(), type) || type < 1)
-        {
-            FatalIOErrorInFunction(axes)
-                << "Entries of 'axes' are named by the multisphere body type"
-                << " (\"1\", \"2\", ...), got '" << e.keyword() << "'"
-                << exit(FatalIOError);
-        }
+        const label type = typeOfEntry(axes, e);
         const word axis(e.stream());
         if (axis != "length" && axis != "thickness")
         {

@@ -25,14 +25,7 @@ Foam::foamDEM::rotationalDrag::rotationalDrag
     const dictionary& factors = dict.subDict("factors");
     for (const entry& e : factors)
     {
-        label type = -1;
-        if (!readLabel(e.keyword(), type) || type < 1)
-        {
-            FatalIOErrorInFunction(factors)
-                << "Entries of 'factors' are named by the multisphere body"
-                << " type (\"1\", \"2\", ...), got '" << e.keyword() << "'"
-                << exit(FatalIOError);
-        }
+        const label type = typeOfEntry(factors, e);
         const scalar f = readScalar(e.stream());
         if (!(f > 0))
         {

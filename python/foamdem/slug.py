@@ -224,6 +224,34 @@ def reference_slug(x, xlo, L, R, dp, phi_min, n_average):
     return rear, front, front - rear, runs
 
 
+FORCE_KEYS = ("fGasSlug", "fWallSlug", "fGasLayer", "fWallLayer", "massSlug",
+              "vxSlug", "vxLayer", "layerMassPerLength")
+
+
+def force_balance(ref, window, v_front):
+    """The slug's axial force balance over the frames selected by window
+    (boolean array), from reference_measures' force sums (NaN without the
+    force columns in the dumps). v_front: the slug front's velocity.
+
+    In a frame moving with the slug, the layer enters at the front with the
+    layer's velocity and leaves at the rear with the slug particles'. The
+    pick-up force is the momentum this takes per unit time:
+    (mass of layer per length) (v_front - v_layer) (v_slug - v_layer).
+    The rest of the gas and wall forces on the slug is carried by contacts
+    with the layer and by unsteadiness (the residual)."""
+    def mean(key):
+        a = ref[key][window]
+        a = a[np.isfinite(a)]
+        return float(np.mean(a)) if a.size else np.nan
+    out = {k: mean(k) for k in FORCE_KEYS}
+    lam, vl, vs = out["layerMassPerLength"], out["vxLayer"], out["vxSlug"]
+    out["pickUp"] = lam * (v_front - vl) * (vs - vl)
+    out["residualSlug"] = out["fGasSlug"] + out["fWallSlug"] - out["pickUp"]
+    out["totalParticles"] = (out["fGasSlug"] + out["fWallSlug"]
+                             + out["fGasLayer"] + out["fWallLayer"])
+    return out
+
+
 def reference_measures(dump_files, dt, xlo, L, R, dp, rhop, x_plane,
                        phi_min=0.45, n_average=5):
     """The reference's frame-wise measures of a run's dumps (sorted by step).
@@ -235,7 +263,8 @@ def reference_measures(dump_files, dt, xlo, L, R, dp, rhop, x_plane,
     files = sorted(dump_files, key=lambda f: int(re.findall(r"\.(\d+)\.txt$", f)[0]))
     m = rhop * np.pi / 6 * dp ** 3
     out = {k: np.full(len(files), np.nan) for k in
-           ("t", "rear", "front", "length", "vParticles", "runs", "crossedMass")}
+           ("t", "rear", "front", "length", "vParticles", "runs", "crossedMass")
+           + FORCE_KEYS}
     prev_ids, prev_side, crossed = None, None, 0.0
     for i, f in enumerate(files):
         step, d = read_dump(f)
@@ -259,6 +288,19 @@ def reference_measures(dump_files, dt, xlo, L, R, dp, rhop, x_plane,
         out["runs"][i] = runs
         if inside.any():
             out["vParticles"][i] = float(np.linalg.norm(v[inside].mean(axis=0)))
+        if d.shape[1] >= 10:
+            # Axial forces of the gas and the wall (dump columns 9 and 10),
+            # summed over the slug's particles and over the others (the
+            # layer), and the others' mean axial velocity and mass per length
+            out["fGasSlug"][i] = float(np.sum(d[inside, 8]))
+            out["fWallSlug"][i] = float(np.sum(d[inside, 9]))
+            out["fGasLayer"][i] = float(np.sum(d[~inside, 8]))
+            out["fWallLayer"][i] = float(np.sum(d[~inside, 9]))
+            out["massSlug"][i] = m * float(np.sum(inside))
+            out["vxSlug"][i] = float(np.mean(v[inside, 0])) if inside.any() else np.nan
+            if (~inside).any() and length < L:
+                out["vxLayer"][i] = float(np.mean(v[~inside, 0]))
+                out["layerMassPerLength"][i] = m * float(np.sum(~inside)) / (L - length)
     have = np.isfinite(out["front"])
     if have.any():
         out["front"][have] = unwrap(out["front"][have], L)

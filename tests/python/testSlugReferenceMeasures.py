@@ -18,6 +18,13 @@ edge of the last, the rear the upper edge of the first, so the length is
 0.4 - 2 d = 0.39 m; the slug velocity is u; the particles-in-slug velocity
 is 1; the mass crossing a fixed plane over a time in which the pattern
 moves a whole number of pipe lengths is exactly M u T / L.
+
+Force balance (frames with the two force columns of the tutorial's dumps):
+slug particles more than 2 d inside the slug's ends carry a gas force of
+1 mN and a wall force of -0.4 mN, layer particles more than 2 d from the
+slug 0.2 mN and -0.25 mN, the others none; the sums over the reference's
+slug and over the rest are then those counts times the forces, and the
+slug particles' mean axial velocity is 0.8.
 """
 import os
 import sys
@@ -49,10 +56,22 @@ def make_pattern(slug_length=0.4, phi_slug=0.6, phi_layer=0.3):
     return np.concatenate([xs, xl]), np.concatenate([np.ones(n_s, bool), np.zeros(n_l, bool)])
 
 
-def write_frames(folder, u, dt_frame, n_frames, rear0=-0.3):
+F_SLUG, W_SLUG, F_LAYER, W_LAYER = 1e-3, -4e-4, 2e-4, -2.5e-4
+
+
+def pattern_forces(x0, in_slug):
+    core = in_slug & (x0 > 2 * DP) & (x0 < 0.4 - 2 * DP)
+    far = ~in_slug & (x0 > 0.4 + 2 * DP) & (x0 < L - 2 * DP)
+    fg = np.where(core, F_SLUG, np.where(far, F_LAYER, 0.0))
+    fw = np.where(core, W_SLUG, np.where(far, W_LAYER, 0.0))
+    return fg, fw, int(core.sum()), int(far.sum())
+
+
+def write_frames(folder, u, dt_frame, n_frames, rear0=-0.3, forces=False):
     x0, in_slug = make_pattern()
     n = len(x0)
     v = np.where(in_slug[:, None], [0.8, 0.0, 0.6], [0.1, 0.0, 0.0])
+    fg, fw, _, _ = pattern_forces(x0, in_slug)
     files = []
     for k in range(n_frames):
         xu = XLO + np.mod(rear0 - XLO, L) + x0 + u * k * dt_frame  # unwrapped
@@ -63,19 +82,23 @@ def write_frames(folder, u, dt_frame, n_frames, rear0=-0.3):
         with open(path, "w") as f:
             f.write("ITEM: TIMESTEP\n%d\nITEM: NUMBER OF ATOMS\n%d\n" % (step, n))
             f.write("ITEM: BOX BOUNDS pp ff ff\n-0.5 0.5\n-0.044 0.044\n-0.044 0.044\n")
-            f.write("ITEM: ATOMS id x y z vx vy vz ix\n")
-            rows = np.column_stack([np.arange(1, n + 1), x, np.zeros(n), np.zeros(n),
-                                    v, ix])
-            np.savetxt(f, rows, fmt="%d %.9g %g %g %g %g %g %d")
+            cols = [np.arange(1, n + 1), x, np.zeros(n), np.zeros(n), v, ix]
+            if forces:
+                f.write("ITEM: ATOMS id x y z vx vy vz ix v_fxGas f_force_pipeWall[1]\n")
+                np.savetxt(f, np.column_stack(cols + [fg, fw]),
+                           fmt="%d %.9g %g %g %g %g %g %d %.9g %.9g")
+            else:
+                f.write("ITEM: ATOMS id x y z vx vy vz ix\n")
+                np.savetxt(f, np.column_stack(cols), fmt="%d %.9g %g %g %g %g %g %d")
         files.append(path)
     return files, n * RHOP * VP
 
 
 class ReferenceMeasures(unittest.TestCase):
 
-    def run_case(self, u, n_frames):
+    def run_case(self, u, n_frames, forces=False):
         with tempfile.TemporaryDirectory() as tmp:
-            files, mass = write_frames(tmp, u, 0.025, n_frames)
+            files, mass = write_frames(tmp, u, 0.025, n_frames, forces=forces)
             out = slug.reference_measures(files, DT_DEM, XLO, L, R, DP, RHOP, 0.375)
         return out, mass
 
@@ -100,6 +123,21 @@ class ReferenceMeasures(unittest.TestCase):
         v = slug.central_difference(out["t"], out["front"], 3)[3:-3]
         self.assertLess(np.max(np.abs(v / 1.3 - 1)), DP / (6 * 0.0325) + 1e-9)
         np.testing.assert_allclose(out["vParticles"], 1.0, rtol=1e-12)
+
+    def test_force_balance(self):
+        out, _ = self.run_case(1.6, 26, forces=True)
+        _, _, n_core, n_far = pattern_forces(*make_pattern())
+        np.testing.assert_allclose(out["fGasSlug"], n_core * F_SLUG, rtol=1e-9)
+        np.testing.assert_allclose(out["fWallSlug"], n_core * W_SLUG, rtol=1e-9)
+        np.testing.assert_allclose(out["fGasLayer"], n_far * F_LAYER, rtol=1e-9)
+        np.testing.assert_allclose(out["fWallLayer"], n_far * W_LAYER, rtol=1e-9)
+        np.testing.assert_allclose(out["vxSlug"], 0.8, rtol=1e-12)
+        fb = slug.force_balance(out, np.ones(len(out["t"]), bool), 1.6)
+        self.assertAlmostEqual(fb["totalParticles"],
+                               n_core * (F_SLUG + W_SLUG) + n_far * (F_LAYER + W_LAYER), places=12)
+        # without the force columns: no force balance
+        out, _ = self.run_case(1.6, 4)
+        self.assertTrue(np.all(np.isnan(out["fGasSlug"])))
 
 
 if __name__ == "__main__":

@@ -227,6 +227,22 @@ def main():
         ("slugLength", "m", stats(ref["length"], w_r)),
         ("solidsMassFlowRateWindow", "kg/s", (mdot_window, np.nan)),
     ]
+    # The slug's axial force balance (N), from the dumps' force columns
+    vf = stats(v_front, w_r)[0]
+    fb = slug.force_balance(ref, w_r, vf)
+    fb_table = [
+        ("gasForceOnSlug", "N", fb["fGasSlug"]),
+        ("wallForceOnSlug", "N", fb["fWallSlug"]),
+        ("pickUpForce", "N", fb["pickUp"]),
+        ("residualOnSlug", "N", fb["residualSlug"]),
+        ("gasForceOnLayer", "N", fb["fGasLayer"]),
+        ("wallForceOnLayer", "N", fb["fWallLayer"]),
+        ("gasAndWallOnAll", "N", fb["totalParticles"]),
+        ("slugMass", "kg", fb["massSlug"]),
+        ("slugParticleVx", "m/s", fb["vxSlug"]),
+        ("layerVelocity", "m/s", fb["vxLayer"]),
+        ("layerMassPerLength", "kg/m", fb["layerMassPerLength"]),
+    ]
     multi_runs = int(np.sum(ref["runs"][w_r] > 1))
     ref_finite = all(np.isfinite(m) for _, _, (m, _) in ref_table)
 
@@ -285,6 +301,14 @@ def main():
                    int(par["refStencilFrames"]), x_plane, t_r[0]))
         for name, unit, (m, s) in ref_table:
             f.write("ref_%-24s %-6s %12.6g %12.6g\n" % (name, unit, m, s))
+        if np.isfinite(fb["fGasSlug"]):
+            f.write("# the slug's axial force balance over the window (the reference's"
+                    " slug; the layer: all other particles): gas and wall forces from"
+                    " the dumps; pick-up = layer mass per length x (front velocity -"
+                    " layer velocity) x (slug particles' vx - layer velocity); residual"
+                    " = gas + wall - pick-up (contacts with the layer, unsteadiness)\n")
+            for name, unit, m in fb_table:
+                f.write("fb_%-25s %-6s %12.6g\n" % (name, unit, m))
         f.write("# checks\n")
         for name, ok, text in checks:
             f.write("%-24s %-4s %s\n" % (name, "PASS" if ok else "FAIL", text))

@@ -1,0 +1,259 @@
+#!/usr/bin/env python3
+"""densePneumaticConveying: the sensitivity and cost table (error against
+run time) of the like-for-like set-up.
+
+    ./sensitivity.py [--variants a,b] [--np 2] [--end 2] [--window 1.5 2.0]
+                     [--work DIR] [--reuse name=DIR ...] [--continue]
+                     [--table-only]
+
+Each variant is a copy of this tutorial (in WORK/<name>, default
+results/sensitivity/runs) with one change from the like-for-like set-up,
+run with ./Allrun -np NP -end END (packing included), then measured with
+postprocess.py --window T0 T1. A variant that already ran (its
+WORK/<name>/results/summary_T0-T1.dat exists) is measured again only; with
+--continue a variant whose run was cut off continues from its latest write.
+--reuse name=DIR takes the run in DIR for that variant instead (the full
+run for "likeForLike", for example: its window is the same if the run
+passed T1).
+
+The variants (no parameter is moved away from the reference's values to
+improve agreement; each one is a set-up choice the reference leaves open,
+or one that foamDEM makes differently):
+
+  likeForLike   the tutorial as it is (wall friction 0.343: harmonic mean)
+  friction04    particle-wall sliding friction 0.4 (the wall's own value;
+                the tutorial before the like-for-like set-up)
+  demStep10     DEM step 1.25e-5 s (9.6 % of the Rayleigh time at
+                E = 1e7) with couplingInterval 40: the same CFD step
+  divided       void fraction divided over the cells, without the
+                smoothing (the reference smooths with L = 2 d)
+  refined       CFD mesh refined once in every direction (O-grid 8 x 8
+                core + 4 radial cells, 5 mm along x: 8 x the cells)
+  seed2         the packing of a second insertion seed (the same shape,
+                particle count and fill method)
+
+Writes results/sensitivity/sensitivity.dat (one line per variant and
+quantity: variant, quantity, foamDEM with the reference's measures, with
+foamDEM's own, the reference's value, the difference in %, the wall time
+of packing + coupled run to T1) and sensitivity.md (the table). The mass
+flow is the one over the window (the cumulative one depends on the start).
+"""
+import argparse
+import glob
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+# The reference's published values (../shared/cases/dense-pneumatic-conveying.md)
+REFERENCE = [
+    ("gasVelocity", "m/s", 2.98),
+    ("slugVelocity", "m/s", 1.30),
+    ("particleVelocityInSlug", "m/s", 0.83),
+    ("solidsMassFlowRate", "kg/s", 1.40),
+    ("slugLength", "m", 0.47),
+]
+
+
+def sed(path, pattern, repl, count=1):
+    """Replace a regular expression in a file; fail if it is not there."""
+    with open(path) as f:
+        text = f.read()
+    new, n = re.subn(pattern, repl, text, count=count, flags=re.M)
+    if n == 0:
+        sys.exit("sensitivity.py: '%s' not found in %s" % (pattern, path))
+    with open(path, "w") as f:
+        f.write(new)
+
+
+def parameter(case, name, value):
+    sed(os.path.join(case, "DEM/parameters"),
+        r"^(variable\s+%s\s+equal\s+)\S+" % name, r"\g<1>%s" % value)
+
+
+def coupling(case, pattern, repl):
+    sed(os.path.join(case, "constant/couplingProperties"), pattern, repl)
+
+
+def v_friction04(case):
+    parameter(case, "wallPairHarmonic", 0)
+
+
+def v_demStep10(case):
+    parameter(case, "demTimestep", "1.25e-5")
+    coupling(case, r"^couplingInterval\s+\d+;", "couplingInterval    40;")
+
+
+def v_divided(case):
+    coupling(case, r"^voidFraction\s+smoothed;", "voidFraction        divided;")
+
+
+def v_refined(case):
+    parameter(case, "nSquare", 8)
+    parameter(case, "nRadial", 4)
+    parameter(case, "cellLength", 0.005)
+
+
+def v_seed2(case):
+    # the insertion seed of the packing stage (a prime, as LIGGGHTS wants)
+    sed(os.path.join(case, "DEM/in.pack"), r"(insert/pack seed )49979687", r"\g<1>32452843")
+
+
+VARIANTS = [
+    ("likeForLike", "the tutorial: wall friction 0.343 (harmonic mean)", None),
+    ("friction04", "particle-wall friction 0.4 (the wall's own value)", v_friction04),
+    ("demStep10", "DEM step 1.25e-5 s (9.6 % t_R), couplingInterval 40", v_demStep10),
+    ("divided", "void fraction divided, no smoothing", v_divided),
+    ("refined", "CFD mesh refined once (8 x the cells)", v_refined),
+    ("seed2", "second packing seed", v_seed2),
+]
+
+
+def read_summary(path):
+    out = {}
+    with open(path) as f:
+        for line in f:
+            p = line.split()
+            if len(p) >= 3 and not line.startswith("#"):
+                try:
+                    out[p[0]] = float(p[2])
+                except ValueError:
+                    pass
+    return out
+
+
+def wall_time(case, t1):
+    """Measured wall time of packing + coupled run up to t1: the LIGGGHTS
+    loop times of the packing log and, per solver log segment, the
+    ClockTime at the last step <= t1."""
+    pack = 0.0
+    log = os.path.join(case, "DEM/log.pack")
+    if os.path.exists(log):
+        with open(log) as f:
+            pack = sum(float(m.group(1)) for m in re.finditer(r"^Loop time of (\S+)", f.read(), re.M))
+    coupled = 0.0
+    for log in sorted(glob.glob(os.path.join(case, "log.pisoDEMFoam*"))):
+        t, last, first = None, None, None
+        with open(log) as f:
+            for line in f:
+                if line.startswith("Time = "):
+                    t = float(line.split()[2])
+                elif "ClockTime" in line and t is not None and t <= t1 + 1e-9:
+                    last = float(line.split()[-2])
+                    first = last if first is None else first
+        if last is not None:
+            coupled += last
+    return pack, coupled
+
+
+def run_variant(name, edit, work, args):
+    case = os.path.join(work, name)
+    summary = os.path.join(case, "results", "summary_%g-%g.dat" % tuple(args.window))
+    if os.path.exists(summary):
+        return case
+    if not (args.cont and os.path.isdir(os.path.join(case, "processor0" if args.np > 1 else "constant"))):
+        if os.path.exists(case):
+            shutil.rmtree(case)
+        shutil.copytree(HERE, case, ignore=shutil.ignore_patterns(
+            "results", "VTK", "processor*", "log.*", "post", "[1-9]*", "0.[0-9]*"))
+        if edit:
+            edit(case)
+        allrun = ["./Allrun", "-np", str(args.np), "-end", str(args.end)]
+    else:
+        allrun = ["./Allrun", "-np", str(args.np), "-end", str(args.end), "-continue"]
+    print("variant %-12s %s" % (name, " ".join(allrun)), flush=True)
+    start = time.monotonic()
+    with open(os.path.join(case, "log.sensitivity"), "a") as log:
+        r = subprocess.run(allrun, cwd=case, stdout=log, stderr=subprocess.STDOUT)
+    print("    %.0f s wall, Allrun exit %d" % (time.monotonic() - start, r.returncode), flush=True)
+    measure(case, args)
+    return case
+
+
+def measure(case, args):
+    py = os.environ.get("FOAMDEM_PYTHON", sys.executable)
+    r = subprocess.run([py, "postprocess.py", "--window"] + [str(w) for w in args.window],
+                       cwd=case, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if r.returncode not in (0, 1):
+        print(r.stdout[-2000:])
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--variants", help="comma list (default: all)")
+    ap.add_argument("--np", type=int, default=2)
+    ap.add_argument("--end", type=float, default=2.0)
+    ap.add_argument("--window", type=float, nargs=2, default=[1.5, 2.0])
+    ap.add_argument("--work", default=os.path.join(HERE, "results", "sensitivity", "runs"))
+    ap.add_argument("--out", default=os.path.join(HERE, "results", "sensitivity"))
+    ap.add_argument("--reuse", action="append", default=[], metavar="NAME=DIR")
+    ap.add_argument("--continue", dest="cont", action="store_true")
+    ap.add_argument("--table-only", action="store_true", help="run nothing, tabulate what exists")
+    args = ap.parse_args()
+
+    reuse = dict(r.split("=", 1) for r in args.reuse)
+    names = [v[0] for v in VARIANTS]
+    wanted = args.variants.split(",") if args.variants else names
+    for w in wanted:
+        if w not in names:
+            sys.exit("sensitivity.py: unknown variant '%s'; valid: %s" % (w, ", ".join(names)))
+    os.makedirs(args.out, exist_ok=True)
+
+    rows = []
+    for name, what, edit in VARIANTS:
+        if name not in wanted:
+            continue
+        if name in reuse:
+            case = os.path.abspath(reuse[name])
+            if not os.path.exists(os.path.join(case, "results", "summary_%g-%g.dat" % tuple(args.window))):
+                measure(case, args)
+        elif args.table_only:
+            case = os.path.join(args.work, name)
+        else:
+            case = run_variant(name, edit, args.work, args)
+        summary = os.path.join(case, "results", "summary_%g-%g.dat" % tuple(args.window))
+        if not os.path.exists(summary):
+            print("variant %s: no %s" % (name, summary))
+            continue
+        s = read_summary(summary)
+        pack, coupled = wall_time(case, args.window[1])
+        rows.append((name, what, s, pack, coupled))
+
+    dat = os.path.join(args.out, "sensitivity.dat")
+    md = os.path.join(args.out, "sensitivity.md")
+    w0, w1 = args.window
+    with open(dat, "w") as f, open(md, "w") as g:
+        f.write("# densePneumaticConveying sensitivity, window %g..%g s, np %d; SI units\n" % (w0, w1, args.np))
+        f.write("# foamDEM_ref: the reference's measures (solidsMassFlowRate over the window);"
+                " foamDEM_own: foamDEM's own; diff_pct: foamDEM_ref against the reference\n")
+        f.write("# wall_s: measured wall time of packing + coupled run to %g s\n" % w1)
+        f.write("# variant quantity reference foamDEM_ref foamDEM_own diff_pct wall_s\n")
+        g.write("Window %g–%g s, np %d; reference's measures (foamDEM's own in brackets);"
+                " difference from the reference in %%.\n\n" % (w0, w1, args.np))
+        g.write("| variant | change | " + " | ".join(q for q, _, _ in REFERENCE)
+                + " | wall (packing + coupled to %g s) |\n" % w1)
+        g.write("|---|---|" + "---|" * len(REFERENCE) + "---|\n")
+        g.write("| reference | | " + " | ".join("%g %s" % (v, u) for _, u, v in REFERENCE) + " | |\n")
+        for name, what, s, pack, coupled in rows:
+            cells = []
+            for q, unit, ref in REFERENCE:
+                rq = "ref_solidsMassFlowRateWindow" if q == "solidsMassFlowRate" else "ref_" + q
+                vr, vo = s.get(rq, float("nan")), s.get(q, float("nan"))
+                d = 100.0 * (vr - ref) / ref
+                f.write("%-12s %-24s %8.4g %10.4g %10.4g %+7.1f %8.0f\n"
+                        % (name, q, ref, vr, vo, d, pack + coupled))
+                cells.append("%.3g (%.3g), %+.1f %%" % (vr, vo, d))
+            g.write("| %s | %s | %s | %.0f + %.0f s |\n"
+                    % (name, what, " | ".join(cells), pack, coupled))
+    print("Table: %s\n       %s" % (dat, md))
+    with open(md) as g:
+        print(g.read())
+
+
+if __name__ == "__main__":
+    main()

@@ -87,6 +87,18 @@ def rong(d, rho, mu, eps, slip):
     return math.pi / 8 * cd * rho * d * d * slip * eps ** (2 - chi)
 
 
+def hoelzer_sommerfeld(d, rho, mu, eps, slip):
+    """Hoelzer & Sommerfeld (2008) for a sphere (Phi = Phi_perp = Phi_par
+    = 1), C_D = 24/Re + 3/sqrt(Re) + 0.42, with Di Felice's voidage
+    function (the model's default): K = (pi/8) C_D rho d^2 slip eps^(2-chi).
+    Free spheres only: the shapes of bodies are not handled here."""
+    re = max(_re(d, rho, mu, eps, slip), 1e-12)
+    slip = re * mu / (eps * rho * d)
+    cd = 24 / re + 3 / math.sqrt(re) + 0.42
+    chi = 3.7 - 0.65 * math.exp(-(1.5 - math.log10(re)) ** 2 / 2)
+    return math.pi / 8 * cd * rho * d * d * slip * eps ** (2 - chi)
+
+
 LAWS = {
     "schillerNaumann": schiller_naumann,
     "diFelice": di_felice,
@@ -95,6 +107,7 @@ LAWS = {
     "beetstra": beetstra,
     "tenneti": tenneti,
     "rong": rong,
+    "hoelzerSommerfeld": hoelzer_sommerfeld,
 }
 
 

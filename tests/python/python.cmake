@@ -15,3 +15,11 @@ set_tests_properties(python.slugReferenceMeasures PROPERTIES LABELS "unit;python
 add_test(NAME python.spoutedAnalysis
     COMMAND sh -c "\"\${FOAMDEM_PYTHON:-python3}\" ${CMAKE_CURRENT_LIST_DIR}/testSpoutedAnalysis.py")
 set_tests_properties(python.spoutedAnalysis PROPERTIES LABELS "unit;python" TIMEOUT 120)
+
+# The experiment fits of a sphere's drag (Brown & Lawler 2003; Clift, Grace
+# & Weber 1978) that settlingSphere's terminal-velocity validation uses as
+# its reference: hand-computed values, continuity of the pieces, the force
+# balance of the terminal-velocity solve and its Stokes limit
+add_test(NAME python.standardDrag
+    COMMAND sh -c "\"\${FOAMDEM_PYTHON:-python3}\" ${CMAKE_CURRENT_LIST_DIR}/testStandardDrag.py")
+set_tests_properties(python.standardDrag PROPERTIES LABELS "unit;python" TIMEOUT 60)

@@ -603,6 +603,7 @@ Foam::foamDEM::demCoupling::demCoupling
     momentum_->addRequirements(plan_);
     output_.addRequirements(plan_);
     plan_.print();
+    engine_->prepare(plan_);
 
     checkTimeSteps();
     checkGravity();

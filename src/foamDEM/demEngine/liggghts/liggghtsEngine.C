@@ -21,6 +21,7 @@
 #include "fix.h"
 #include "fix_gravity.h"
 #include "fix_property_global.h"
+#include "fix_property_atom.h"
 #include "fix_multisphere.h"
 #include "multisphere.h"
 #include "custom_value_tracker.h"
@@ -308,25 +309,69 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
             << endl;
     }
 
-    if (!lmp_->modify->find_fix_style("couple/cfd", 0))
+}
+
+
+void Foam::foamDEM::liggghtsEngine::prepare(const exchangePlan& plan)
+{
+    // The coupling force fix the plan needs, if the script has none:
+    // - implicit coupling (K_p and u_f pushed): couple/cfd/force/implicit,
+    //   with the Crank-Nicolson update when the DEM integrates the drag;
+    // - explicit forces or torques only: couple/cfd/force (one force array);
+    // - nothing pushed (a scene whose particles only make void fraction):
+    //   no coupling fix at all.
+    // LIGGGHTS's per-atom torque array (hdtorque) is never used: bodies take
+    // their torque through fix multisphere's hdtorque_cm (see the class
+    // description). couple/cfd/force/implicit neither applies it nor needs
+    // it: transfer_torque no. couple/cfd/force reads it in every post_force
+    // even with transfer_torque no (LIGGGHTS 3.8.0 then dereferences a null
+    // fix and crashes), so it keeps it.
+    const bool implicitCoeff = plan.has(quantity::implicitCoeff);
+    const bool pushes =
+        implicitCoeff
+     || plan.has(quantity::explicitForce)
+     || plan.has(quantity::torque);
+
+    if (pushes && !lmp_->modify->find_fix_style("couple/cfd/force", 0))
     {
-        run("fix foamDEM_couple all couple/cfd couple_every 0 mpi",
-            "adding the coupling fix");
-    }
-    if (!lmp_->modify->find_fix_style("couple/cfd/force", 0))
-    {
-        run
-        (
-            implicitDrag_
-          ? "fix foamDEM_force all couple/cfd/force/implicit CrankNicolson 1.0"
-          : "fix foamDEM_force all couple/cfd/force/implicit",
-            "adding the coupling force fix"
-        );
+        if (!lmp_->modify->find_fix_style("couple/cfd", 0))
+        {
+            run("fix foamDEM_couple all couple/cfd couple_every 0 mpi",
+                "adding the coupling fix");
+        }
+        string cmd("fix foamDEM_force all couple/cfd/force");
+        if (implicitCoeff)
+        {
+            cmd += "/implicit transfer_torque no";
+            if (implicitDrag_) cmd += " CrankNicolson 1.0";
+        }
+        run(cmd, "adding the coupling force fix");
     }
 
     // Set the DEM up now (neighbour lists, fix gravity), so that errors
     // surface at start-up and gravity() is known
     run("run 0", "setting up the DEM");
+
+    // What exists, per atom, for the coupling (asked of LIGGGHTS, not
+    // derived from the plan)
+    Info<< "    LIGGGHTS: per-atom coupling arrays:";
+    label nDoubles = 0;
+    for (const char* name :
+        {"dragforce", "hdtorque", "Ksl", "uf", "KslRotation", "ex", "KslExtra"})
+    {
+        auto* fix = dynamic_cast<LAMMPS_NS::FixPropertyAtom*>
+        (
+            lmp_->modify->find_fix_id(name)
+        );
+        if (fix)
+        {
+            const label n = fix->get_nvalues();
+            Info<< ' ' << name << '[' << n << ']';
+            nDoubles += n;
+        }
+    }
+    Info<< (nDoubles ? "" : " none") << " (" << nDoubles*sizeof(double)
+        << " B per atom)" << endl;
 }
 
 

@@ -60,6 +60,22 @@ add_test(NAME exchangePlan.explicitDrag
 set_tests_properties(exchangePlan.explicitDrag PROPERTIES
     LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_explicit)
 
+# The same scenes, asked of LIGGGHTS: implicit drag has K_p and u_f but
+# no per-atom torque; explicit coupling has one force array (and the
+# torque array couple/cfd/force reads), none of the implicit fix's
+add_test(NAME demArrays.implicitDrag
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkDEMArrays
+            ${FOAMDEM_WORK}/settlingSphere_schillerNaumann/log.pisoDEMFoam
+            "dragforce Ksl uf" "hdtorque")
+set_tests_properties(demArrays.implicitDrag PROPERTIES
+    LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_schillerNaumann)
+add_test(NAME demArrays.explicitDrag
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkDEMArrays
+            ${FOAMDEM_WORK}/settlingSphere_explicit/log.pisoDEMFoam
+            "dragforce" "Ksl uf KslRotation ex KslExtra")
+set_tests_properties(demArrays.explicitDrag PROPERTIES
+    LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_explicit)
+
 # Parallel: the sphere's cell is on CFD rank 0 while LIGGGHTS holds it on
 # rank 1, so it moves between ranks every step; np = 1 and np = 2 agree
 add_test(NAME parallel.settlingSphere.np2
@@ -93,3 +109,12 @@ add_test(NAME momentumBalance.magnusLift
     COMMAND ${BALANCE} ${FOAMDEM_WORK}/settlingSphere_magnus/log.pisoDEMFoam 1e-10)
 set_tests_properties(exchangePlan.magnusLift momentumBalance.magnusLift PROPERTIES
     LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_magnus)
+
+# Validation against experiments: schillerNaumann's terminal velocity at
+# Re_t 10 and 300 within 1 % of Brown & Lawler's (2003) fit to measured
+# drag (measured -0.38 % and -0.60 %), each run levelled off
+add_test(NAME settlingSphere.terminalVelocity
+    COMMAND ${TUT} settlingSphere ${FOAMDEM_WORK}/settlingSphere_terminal
+            -terminal -ci)
+set_tests_properties(settlingSphere.terminalVelocity PROPERTIES
+    LABELS "integration;tutorial;validation" TIMEOUT 180)

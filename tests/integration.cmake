@@ -22,5 +22,11 @@ foreach(bad ${BAD_CASES})
     add_test(NAME badInput.${bad}
         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/badInput/runBadInput ${bad}
                 ${FOAMDEM_WORK}/badInput/${bad})
-    set_tests_properties(badInput.${bad} PROPERTIES LABELS badInput TIMEOUT 60)
+    if(bad MATCHES "Parallel$")
+        # np[...] = 2 in runBadInput
+        set_tests_properties(badInput.${bad} PROPERTIES
+            LABELS "badInput;parallel" TIMEOUT 60 PROCESSORS 2)
+    else()
+        set_tests_properties(badInput.${bad} PROPERTIES LABELS badInput TIMEOUT 60)
+    endif()
 endforeach()

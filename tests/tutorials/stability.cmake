@@ -12,6 +12,7 @@ set(STABILITY ${CMAKE_CURRENT_SOURCE_DIR}/stability/runStability)
 # nanParticleNoTrap, nanFluidNoTrap.
 foreach(c zeroParticles outsideMesh outlet stiffE1e9 stiffE1e10 fineImplicit
           highRe denseRCP denseRCPDivided oneCell largeParticles
+          largeParticlesOverride
           largeParticlesSmoothed
           nanParticle nanFluid)
     add_test(NAME stability.${c}

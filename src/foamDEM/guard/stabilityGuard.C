@@ -3,6 +3,8 @@
 #include "timeStepCriteria.H"
 #include "mathematicalConstants.H"
 #include "wallFvPatch.H"
+#include "locateModel.H"
+#include "particleTransfer.H"
 
 namespace
 {
@@ -20,6 +22,9 @@ namespace
     {
         return fmt(100*x) + " %";
     }
+
+    //- The dictionary of the coupling and of the guard's keys
+    const string couplingFile("constant/couplingProperties");
 
     //- Smallest value and where it was, reduced over ranks
     struct worst
@@ -154,12 +159,40 @@ void Foam::foamDEM::stabilityGuard::checkRelaxationTime
 
 void Foam::foamDEM::stabilityGuard::checkCellSize(scalar dMax)
 {
+    // d/h up to which a model is meant to be used (warn above), and the
+    // d/h above which it cannot hold a particle at all (refuse): centre
+    // puts a particle's whole volume into the one cell of its centre
     const word vfType(coupling_.voidFractionType());
     const scalar handles =
         vfType == "centre" ? 1.0/3.0 : vfType == "divided" ? 1.0 : GREAT;
+    const scalar holds = vfType == "centre" ? 1.0 : GREAT;
 
-    const particleData& p = coupling_.particles();
-    const scalarField& V = coupling_.mesh().V();
+    // Each particle in the cell that holds it: located in this rank's mesh,
+    // and in parallel moved to the rank whose mesh holds it (the DEM and
+    // the CFD decompose the domain independently), as in a coupling step
+    const fvMesh& mesh = coupling_.mesh();
+    exchangePlan plan;
+    for (const quantity q :
+        {quantity::position, quantity::radius, quantity::id})
+    {
+        plan.need(q, "stabilityGuard");
+    }
+    particleData p;
+    coupling_.engine().pull(plan, p);
+    autoPtr<locateModel> locate
+    (
+        locateModel::New
+        (
+            mesh.lookupObject<IOdictionary>("couplingProperties"), mesh
+        )
+    );
+    locate->locate(p);
+    if (Pstream::parRun())
+    {
+        particleTransfer(mesh).gather(p, locate(), plan);
+    }
+
+    const scalarField& V = mesh.V();
     scalar worstRatio = 0;
     forAll(p.cell, i)
     {
@@ -179,7 +212,23 @@ void Foam::foamDEM::stabilityGuard::checkCellSize(scalar dMax)
           + fmt(worstRatio) + " (void fraction model " + vfType + ')'
         );
     }
-    if (worstRatio > handles*(1 + 1e-6))
+    if (worstRatio > holds*(1 + 1e-6))
+    {
+        refuse
+        (
+            "particles up to " + fmt(worstRatio) + " cell sizes across"
+            " (d/h, h the cube root of the cell volume) with 'voidFraction "
+          + vfType + ";' in " + couplingFile + ": this model puts a"
+            " particle's whole volume into the one cell of its centre,"
+            " smaller than the particle. Set the keyword voidFraction to a"
+            " model that spreads"
+            " a particle over the cells it covers: 'divided' (meant for d/h"
+            " up to 1) or 'smoothed' (any d/h; smoothedCoeffs {"
+            " smoothingLengthInDiameters 1; }), or use cells at least "
+          + fmt(dMax) + " m across."
+        );
+    }
+    else if (worstRatio > handles*(1 + 1e-6))
     {
         warn
         (
@@ -187,6 +236,44 @@ void Foam::foamDEM::stabilityGuard::checkCellSize(scalar dMax)
             " the void fraction model '" + vfType + "' is meant for up to "
           + fmt(handles) + ". Use 'voidFraction smoothed;' (or coarser"
             " cells) so the solid volume spreads over neighbouring cells."
+        );
+    }
+}
+
+
+void Foam::foamDEM::stabilityGuard::checkDomainSize(scalar dMax)
+{
+    // The mesh's extent in each direction of the solution (not across an
+    // empty or wedge direction), over all ranks
+    const fvMesh& mesh = coupling_.mesh();
+    const boundBox bounds(mesh.points(), true);
+    const vector span(bounds.span());
+    const Vector<label>& solutionD = mesh.solutionD();
+    scalar smallest = GREAT;
+    direction across = 0;
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (solutionD[d] == 1 && span[d] < smallest)
+        {
+            smallest = span[d];
+            across = d;
+        }
+    }
+
+    if (dMax > smallest*(1 + 1e-6))
+    {
+        refuse
+        (
+            "the largest particle, d = " + fmt(dMax) + " m, is larger than"
+            " the CFD domain, which is " + fmt(smallest) + " m across in "
+          + vector::componentNames[across] + " (mesh bounds "
+          + fmt(bounds.min().x()) + ' ' + fmt(bounds.min().y()) + ' '
+          + fmt(bounds.min().z()) + " to " + fmt(bounds.max().x()) + ' '
+          + fmt(bounds.max().y()) + ' ' + fmt(bounds.max().z()) + " m): no"
+            " void fraction model can hold it. Check the particle diameter"
+            " and its units (SI) in the DEM script (or the keyword"
+            " particleDiameter of stabilityGuard in " + couplingFile
+          + "), and the mesh's size and scale (system/blockMeshDict)."
         );
     }
 }
@@ -322,6 +409,7 @@ void Foam::foamDEM::stabilityGuard::check()
         note("the DEM integrates no particles (frozen bed): contact and"
             " relaxation-time checks skipped");
         checkCellSize(dMax);
+        checkDomainSize(dMax);
     }
     else if (dMax > 0 && refusals_.empty())
     {
@@ -435,6 +523,7 @@ void Foam::foamDEM::stabilityGuard::check()
 
         checkRelaxationTime(dMin, rhoMin);
         checkCellSize(dMax);
+        checkDomainSize(dMax);
     }
     checkCourant(vMax);
     checkBoundaryVoidFraction();
@@ -473,8 +562,9 @@ void Foam::foamDEM::stabilityGuard::check()
                 FatalIOError << "  - " << s.c_str() << nl;
             }
             FatalIOError
-                << "Experts can run anyway with stabilityGuard { override"
-                << " true; } in couplingProperties." << exit(FatalIOError);
+                << "Experts can run anyway with the keyword override:"
+                << " stabilityGuard { override true; } in "
+                << couplingFile.c_str() << '.' << exit(FatalIOError);
         }
     }
     Info<< endl;

@@ -3,5 +3,6 @@
 # faster than they do
 VOIDFRACTION=smoothed
 COEFFS="{ alphaMin 0.3; base divided; smoothingLengthInDiameters 1; }"
-. "$(dirname "${BASH_SOURCE[0]}")/largeParticles.sh"
+. "$here/largeParticles.inc"
+setup() { largeParticles; }
 CHECK=(--particles 2 --physics settle)

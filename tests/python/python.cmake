@@ -23,3 +23,11 @@ set_tests_properties(python.spoutedAnalysis PROPERTIES LABELS "unit;python" TIME
 add_test(NAME python.standardDrag
     COMMAND sh -c "\"\${FOAMDEM_PYTHON:-python3}\" ${CMAKE_CURRENT_LIST_DIR}/testStandardDrag.py")
 set_tests_properties(python.standardDrag PROPERTIES LABELS "unit;python" TIMEOUT 60)
+
+# doc/models.md against the code: every documented model name is selectable
+# and every selectable model is documented (the valid names are those the
+# solver lists for an unknown name, in copies of settlingSphere; fails with
+# an entry of models.md renamed). Runs the solver: label integration too
+add_test(NAME python.modelsDocumented
+    COMMAND sh -c "\"\${FOAMDEM_PYTHON:-python3}\" ${CMAKE_CURRENT_LIST_DIR}/testModelsDocumented.py ${FOAMDEM_WORK}/modelsDocumented")
+set_tests_properties(python.modelsDocumented PROPERTIES LABELS "integration;python" TIMEOUT 120)

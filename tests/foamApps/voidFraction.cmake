@@ -3,7 +3,7 @@
 set(VF_RUN ${CMAKE_CURRENT_SOURCE_DIR}/foamApps/testVoidFraction/runTest)
 
 # suite:mesh:processors
-foreach(spec box:box:1 periodic:periodic:1 parallel:box:2 badInput:box:1)
+foreach(spec box:box:1 periodic:periodic:1 parallel:box:2 badInput:box:1 shapes:uniform:1)
     string(REPLACE ":" ";" spec ${spec})
     list(GET spec 0 suite)
     list(GET spec 1 mesh)

@@ -333,3 +333,65 @@ TEST(ShapeDescriptors, HoelzerSommerfeldCdPlate)
                    crosswiseSphericity(plate, broad)), c.simplified, tol) << c.Re;
     }
 }
+
+// Sub-volume points (divided void fraction of shaped particles). Counts
+// worked by hand: plate 5.5 x 1.1 x 0.33 mm, 40 aimed at: h = (V/40)^(1/3)
+// = 0.3684 mm, 15 x 3 x 1 boxes; rod D 1.1, L 5.5 mm: V = 4.8784 mm^3,
+// h = 0.4960 mm, 11 x 2 x 2 cells, every centre inside (the end cells'
+// centres are 0.491 mm from the cap centres, < 0.55 mm).
+namespace
+{
+template<class Shape>
+void moments(const Shape& s, int n, double& count, double c[3], double m2[3])
+{
+    const std::vector<bodyPoint> pts = subVolumePoints(s, n);
+    count = pts.size();
+    for (int d = 0; d < 3; ++d)
+    {
+        c[d] = m2[d] = 0;
+        for (const bodyPoint& p : pts) { c[d] += p[d]; m2[d] += p[d]*p[d]; }
+        c[d] /= count;
+        m2[d] /= count;
+    }
+}
+}
+
+TEST(ShapeDescriptors, PlateSubVolumePoints)
+{
+    const cuboid plate{5.5e-3, 1.1e-3, 0.33e-3};
+    double n, c[3], m2[3];
+    moments(plate, 40, n, c, m2);
+    EXPECT_EQ(n, 45);
+    for (int d = 0; d < 3; ++d) EXPECT_NEAR(c[d], 0, 1e-18);
+    // midpoint grid: mean x^2 = a^2/12 (1 - 1/n^2)
+    EXPECT_REL(m2[0], 5.5e-3*5.5e-3/12*(1 - 1.0/225), 1e-12);
+    EXPECT_REL(m2[1], 1.1e-3*1.1e-3/12*(1 - 1.0/9), 1e-12);
+    EXPECT_NEAR(m2[2], 0, 1e-24);
+    for (const bodyPoint& p : subVolumePoints(plate, 40))
+    {
+        EXPECT_LE(std::fabs(p[0]), 0.5*plate.a);
+        EXPECT_LE(std::fabs(p[1]), 0.5*plate.b);
+    }
+}
+
+TEST(ShapeDescriptors, SpherocylinderSubVolumePoints)
+{
+    const spherocylinder rod{1.1e-3, 5.5e-3};
+    double n, c[3], m2[3];
+    moments(rod, 40, n, c, m2);
+    EXPECT_EQ(n, 44);
+    for (int d = 0; d < 3; ++d) EXPECT_NEAR(c[d], 0, 1e-18);
+    // Fine sets approach the body's second moment along its axis:
+    // cylinder pi r^2 2c^3/3 plus two hemispheres at +-c,
+    // 2 (2/3 pi r^3 c^2 + 2 c pi r^4/4 + 2/15 pi r^5), over V
+    const double r = 0.55e-3, cc = 0.5*(5.5e-3 - 1.1e-3);
+    const double V = M_PI*r*r*2*cc + 4.0/3*M_PI*r*r*r;
+    const double Ixx = M_PI*r*r*2*cc*cc*cc/3
+        + 2*(2.0/3*M_PI*r*r*r*cc*cc + 2*cc*M_PI*r*r*r*r/4 + 2.0/15*M_PI*std::pow(r, 5));
+    moments(rod, 20000, n, c, m2);
+    EXPECT_REL(m2[0], Ixx/V, 0.01);
+    // A target of one point: the centre
+    const std::vector<bodyPoint> one = subVolumePoints(spherocylinder{1e-3, 1e-3}, 1);
+    ASSERT_EQ(one.size(), 1u);
+    EXPECT_NEAR(one[0][0], 0, 1e-18);
+}

@@ -291,5 +291,65 @@ double lengthwiseSphericity(const cuboid& s, const double dirBody[3])
        /(0.5*surfaceArea(s) - meanLongitudinalProjectedArea(s, dirBody));
 }
 
+// * * * * * * * * * * * * *  Sub-volume points  * * * * * * * * * * * * * //
+
+namespace
+{
+int cellsAlong(double edge, double h)
+{
+    const double n = std::round(edge/h);
+    return n < 1 ? 1 : static_cast<int>(n);
+}
+
+// Centre of cell i of n equal cells over [-edge/2, edge/2]
+double cellCentre(int i, int n, double edge)
+{
+    return (i + 0.5)*edge/n - 0.5*edge;
+}
+}
+
+
+std::vector<bodyPoint> subVolumePoints(const cuboid& s, int nTarget)
+{
+    std::vector<bodyPoint> pts;
+    if (!(s.a > 0 && s.b > 0 && s.c > 0) || nTarget < 1) return pts;
+    const double h = std::cbrt(volume(s)/nTarget);
+    const int na = cellsAlong(s.a, h), nb = cellsAlong(s.b, h),
+        nc = cellsAlong(s.c, h);
+    pts.reserve(static_cast<std::size_t>(na)*nb*nc);
+    for (int i = 0; i < na; ++i)
+        for (int j = 0; j < nb; ++j)
+            for (int k = 0; k < nc; ++k)
+                pts.push_back(bodyPoint{{cellCentre(i, na, s.a),
+                    cellCentre(j, nb, s.b), cellCentre(k, nc, s.c)}});
+    return pts;
+}
+
+
+std::vector<bodyPoint> subVolumePoints(const spherocylinder& s, int nTarget)
+{
+    std::vector<bodyPoint> pts;
+    if (!(s.D > 0 && s.L >= s.D) || nTarget < 1) return pts;
+    const double h = std::cbrt(volume(s)/nTarget);
+    const int nx = cellsAlong(s.L, h), ny = cellsAlong(s.D, h);
+    const double R = 0.5*s.D, halfCore = 0.5*(s.L - s.D);
+    for (int i = 0; i < nx; ++i)
+    {
+        const double x = cellCentre(i, nx, s.L);
+        const double ax = std::fabs(x) > halfCore ? std::fabs(x) - halfCore : 0;
+        for (int j = 0; j < ny; ++j)
+            for (int k = 0; k < ny; ++k)
+            {
+                const double y = cellCentre(j, ny, s.D), z = cellCentre(k, ny, s.D);
+                if (ax*ax + y*y + z*z <= R*R)
+                {
+                    pts.push_back(bodyPoint{{x, y, z}});
+                }
+            }
+    }
+    if (pts.empty()) pts.push_back(bodyPoint{{0, 0, 0}});
+    return pts;
+}
+
 } // End namespace correlations
 } // End namespace foamDEM

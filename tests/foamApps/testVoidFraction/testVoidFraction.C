@@ -1041,10 +1041,118 @@ void badInputSuite(const fvMesh& mesh)
 } // End anonymous namespace
 
 
+
+//- Shaped particles (dividedCoeffs.shapes): a plate 4h x 0.8h x 0.24h at a
+//  cell centre, its length along x, then turned 90 deg about z (length
+//  along y). Worked by hand: shapeSubVolumes 40 gives 15 x 3 x 1 points
+//  (edge / (V/40)^(1/3) rounded), at x offsets (i + 1/2) 4h/15 - 2h; per
+//  column of cells along the length 2, 4, 3, 4, 2 of the 15, so the cells
+//  get 2/15, 4/15, 3/15, 4/15, 2/15; the width's 3 points stay in the
+//  centre cell. As a sphere of its volume-equivalent diameter (1.14 h) the
+//  same particle reaches no cell two cells away.
+void shapesSuite(const fvMesh& mesh)
+{
+    const scalar h = typicalCellSize(mesh);
+    const boundBox bb(mesh.points());
+    const label c0 = mesh.findCell(bb.midpoint());
+    const point x0 = mesh.C()[c0];
+
+    exchangePlan plan(testPlan());
+    plan.need(quantity::type, "testVoidFraction");
+    plan.need(quantity::orientation, "testVoidFraction");
+    const scalar V = 4*0.8*0.24*h*h*h;
+    const scalar r = 0.5*Foam::cbrt(6*V/constant::mathematical::pi);
+
+    particleData p;
+    p.resize(2, plan);
+    p.position = x0;
+    p.radius = r;
+    p.velocity = Zero;
+    p.id = identity(2);
+    p.type = 1;
+    p.orientation[0] = tensor::I;
+    // body x along lab y: x_lab = R & x_body
+    p.orientation[1] = tensor(0, -1, 0, 1, 0, 0, 0, 0, 1);
+    {
+        dictionary dict;
+        dict.add("locate", word("hinted"));
+        locateModel::New(dict, mesh)->locate(p);
+    }
+
+    dictionary plate;
+    plate.add("shape", word("plate"));
+    plate.add("length", 4*h);
+    plate.add("width", 0.8*h);
+    plate.add("thickness", 0.24*h);
+    dictionary shapes;
+    shapes.add("1", plate);
+    dictionary coeffs;
+    coeffs.add("shapes", shapes);
+    autoPtr<voidFractionModel> model =
+        voidFractionModel::New(couplingDict("divided", coeffs), mesh);
+
+    {
+        exchangePlan need;
+        model->addRequirements(need);
+        check
+        (
+            need.has(quantity::type) && need.has(quantity::orientation),
+            "divided with shapes asks for type and orientation"
+        );
+    }
+    volScalarField alpha(makeAlpha(mesh, "alpha"));
+    model->compute(p, alpha);
+    const particleCellWeights& w = model->cellWeights();
+
+    const scalar expected[5] = {2, 4, 3, 4, 2};
+    for (label i = 0; i < 2; ++i)
+    {
+        const vector axis(i == 0 ? vector(1, 0, 0) : vector(0, 1, 0));
+        scalar total = 0, worst = 0;
+        label nCells = 0;
+        for (label k = w.start(i); k < w.end(i); ++k)
+        {
+            total += w.weight(k);
+            ++nCells;
+            const vector d(mesh.C()[w.cell(k)] - x0);
+            const label column = label(std::lround((d & axis)/h)) + 2;
+            const bool onAxis = mag(d - (d & axis)*axis) < 1e-6*h;
+            const scalar want =
+                (onAxis && column >= 0 && column < 5) ? expected[column]/15 : 0;
+            worst = max(worst, mag(w.weight(k) - want));
+        }
+        check
+        (
+            nCells == 5 && mag(total - 1) < 1e-12 && worst < 1e-12,
+            str("plate ", i == 0 ? "along x" : "turned along y", ": ", nCells,
+                " cells (expected 5), weights off the hand-worked 2,4,3,4,2"
+                " /15 by ", worst, ", sum ", total)
+        );
+    }
+
+    // The same particle as a sphere of its volume-equivalent diameter
+    autoPtr<voidFractionModel> sphere =
+        voidFractionModel::New(couplingDict("divided", dictionary()), mesh);
+    sphere->compute(p, alpha);
+    const particleCellWeights& ws = sphere->cellWeights();
+    scalar reach = 0;
+    for (label k = ws.start(0); k < ws.end(0); ++k)
+    {
+        reach = max(reach, mag(mesh.C()[ws.cell(k)] - x0));
+    }
+    check
+    (
+        reach < 1.5*h,
+        str("as a sphere (d_v = ", 2*r/h, " h) it reaches cells ", reach/h,
+            " h away (< 1.5 h); as a plate 2 h")
+    );
+}
+
+
 int main(int argc, char *argv[])
 {
     argList::addNote("Tests of the void fraction models and averaging");
-    argList::addOption("suite", "name", "box, periodic, parallel, badInput or timing");
+    argList::addOption("suite", "name", "box, periodic, parallel, badInput, shapes or timing");
     argList::addOption("nParticles", "N", "timing: number of particles");
     argList::addOption("radius", "r", "timing: radius in cell sizes");
 
@@ -1080,6 +1188,10 @@ int main(int argc, char *argv[])
     else if (suite == "badInput")
     {
         badInputSuite(mesh);
+    }
+    else if (suite == "shapes")
+    {
+        shapesSuite(mesh);
     }
     else
     {

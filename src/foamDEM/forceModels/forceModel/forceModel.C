@@ -1,4 +1,5 @@
 #include "forceModel.H"
+#include "particleShapes.H"
 #include "selectModel.H"
 
 namespace Foam
@@ -38,13 +39,5 @@ Foam::label Foam::foamDEM::forceModel::typeOfEntry
     const entry& e
 )
 {
-    label type = -1;
-    if (!readLabel(e.keyword(), type) || type < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entries of '" << dict.dictName() << "' are named by the"
-            << " particle type (\"1\", \"2\", ...), got '" << e.keyword()
-            << "'" << exit(FatalIOError);
-    }
-    return type;
+    return particleTypeOfEntry(dict, e);
 }

@@ -43,48 +43,7 @@ Foam::foamDEM::hoelzerSommerfeldDrag::hoelzerSommerfeldDrag
     }
     diFeliceVoidage_ = (voidage == "diFelice");
 
-    const dictionary& shapesDict = dict.subOrEmptyDict("shapes");
-    for (const entry& e : shapesDict)
-    {
-        const dictionary& sd = e.dict();
-        const label type = typeOfEntry(shapesDict, e);
-        const word shape(sd.get<word>("shape"));
-        shapeSpec spec;
-        if (shape == "spherocylinder")
-        {
-            spec.kind = shapeSpec::kinds::spherocylinder;
-            spec.dim[0] = sd.get<scalar>("diameter");
-            spec.dim[1] = sd.get<scalar>("length");
-            spec.dim[2] = 0;
-            if (spec.dim[1] < spec.dim[0] || spec.dim[0] <= 0)
-            {
-                FatalIOErrorInFunction(sd)
-                    << "A spherocylinder needs 0 < diameter <= length (the"
-                    << " total length, caps included)" << exit(FatalIOError);
-            }
-        }
-        else if (shape == "plate")
-        {
-            spec.kind = shapeSpec::kinds::plate;
-            spec.dim[0] = sd.get<scalar>("length");
-            spec.dim[1] = sd.get<scalar>("width");
-            spec.dim[2] = sd.get<scalar>("thickness");
-            if (min(spec.dim[0], min(spec.dim[1], spec.dim[2])) <= 0)
-            {
-                FatalIOErrorInFunction(sd)
-                    << "A plate needs positive length, width and thickness"
-                    << exit(FatalIOError);
-            }
-        }
-        else
-        {
-            FatalIOErrorInFunction(sd)
-                << "Unknown shape " << shape << nl << nl
-                << "Valid shape types :" << nl << "2(plate spherocylinder)"
-                << exit(FatalIOError);
-        }
-        shapes_.set(type, spec);
-    }
+    shapes_ = readParticleShapes(dict.subOrEmptyDict("shapes"));
 }
 
 

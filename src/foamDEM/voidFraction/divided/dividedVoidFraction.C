@@ -1,4 +1,5 @@
 #include "dividedVoidFraction.H"
+#include "shapeDescriptors.H"
 #include "cyclicPolyPatch.H"
 #include "processorPolyPatch.H"
 #include "FixedList.H"
@@ -95,16 +96,24 @@ bool Foam::foamDEM::dividedVoidFraction::pointsInsideCell
     label celli
 ) const
 {
-    const scalar reach = r*maxPointRadius_;
-    const vectorField& Sf = mesh_.faceAreas();
+    return withinCell(x, r*maxPointRadius_, celli);
+}
+
+
+bool Foam::foamDEM::dividedVoidFraction::withinCell
+(
+    const point& x,
+    scalar reach,
+    label celli
+) const
+{
     const vectorField& Cf = mesh_.faceCentres();
     const labelList& own = mesh_.faceOwner();
 
     for (const label facei : mesh_.cells()[celli])
     {
-        const vector n =
-            (own[facei] == celli ? 1 : -1)*Sf[facei]/mag(Sf[facei]);
-        if (((Cf[facei] - x) & n) < reach)
+        const scalar sign = own[facei] == celli ? 1 : -1;
+        if (sign*((Cf[facei] - x) & unitNormals_[facei]) < reach)
         {
             return false;
         }
@@ -116,10 +125,10 @@ bool Foam::foamDEM::dividedVoidFraction::pointsInsideCell
 Foam::label Foam::foamDEM::dividedVoidFraction::locatePoint
 (
     const point& y0,
-    label own
+    label own,
+    bool wallCell
 ) const
 {
-    const vectorField& Sf = mesh_.faceAreas();
     const vectorField& Cf = mesh_.faceCentres();
     const labelList& owner = mesh_.faceOwner();
     const labelList& neighbour = mesh_.faceNeighbour();
@@ -136,7 +145,7 @@ Foam::label Foam::foamDEM::dividedVoidFraction::locatePoint
         {
             const scalar d =
                 (owner[facei] == celli ? 1 : -1)
-               *((y - Cf[facei]) & Sf[facei])/mag(Sf[facei]);
+               *((y - Cf[facei]) & unitNormals_[facei]);
             if (d > exitDistance)
             {
                 exitDistance = d;
@@ -181,6 +190,11 @@ Foam::label Foam::foamDEM::dividedVoidFraction::locatePoint
             continue;
         }
         // A wall or other boundary: outside, unless the domain is concave
+        if (wallCell)
+        {
+            ++nAtWalls_;
+            return celli;
+        }
         break;
     }
 
@@ -207,13 +221,61 @@ Foam::foamDEM::dividedVoidFraction::dividedVoidFraction
     unitPoints_(makeUnitPoints()),
     maxPointRadius_(max(mag(vectorField(unitPoints_)))),
     maxWalkSteps_(dict.getOrDefault<label>("maxWalkSteps", 100)),
+    unitNormals_(mesh.faceAreas()/mag(mesh.faceAreas())),
     search_(mesh, polyMesh::CELL_TETS),
     nFastParticles_(0),
     nWalkSteps_(0),
     nTreeSearches_(0),
     nPeriodicCrossings_(0),
-    nOutside_(0)
-{}
+    nOutside_(0),
+    nAtWalls_(0)
+{
+    namespace corr = ::foamDEM::correlations;
+    const label nTarget = dict.getOrDefault<label>("shapeSubVolumes", 40);
+    if (nTarget < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "shapeSubVolumes must be at least 1, got " << nTarget
+            << exit(FatalIOError);
+    }
+    const Map<particleShape> shapes
+    (
+        readParticleShapes(dict.subOrEmptyDict("shapes"))
+    );
+    forAllConstIters(shapes, iter)
+    {
+        const particleShape& sh = iter.val();
+        std::vector<corr::bodyPoint> pts;
+        if (sh.kind == particleShape::kinds::plate)
+        {
+            pts = corr::subVolumePoints
+            (
+                corr::cuboid{sh.dim[0], sh.dim[1], sh.dim[2]}, nTarget
+            );
+        }
+        else if (sh.kind == particleShape::kinds::spherocylinder)
+        {
+            pts = corr::subVolumePoints
+            (
+                corr::spherocylinder{sh.dim[0], sh.dim[1]}, nTarget
+            );
+        }
+        List<vector> body(pts.size());
+        scalar reach = 0;
+        forAll(body, k)
+        {
+            body[k] = vector(pts[k][0], pts[k][1], pts[k][2]);
+            reach = max(reach, mag(body[k]));
+        }
+        Info<< "    " << typeName << ": type " << iter.key() << " spread"
+            << " over " << body.size() << " sub-volumes of its shape" << endl;
+        vector extent(Zero);
+        for (const vector& b : body) extent = max(extent, cmptMag(b));
+        shapePoints_.set(iter.key(), body);
+        shapeReach_.set(iter.key(), reach);
+        shapeExtent_.set(iter.key(), extent);
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member functions  * * * * * * * * * * * * * //
@@ -225,6 +287,11 @@ void Foam::foamDEM::dividedVoidFraction::addRequirements
 {
     plan.need(quantity::position, typeName);
     plan.need(quantity::radius, typeName);
+    if (shapePoints_.size())
+    {
+        plan.need(quantity::type, typeName);
+        plan.need(quantity::orientation, typeName);
+    }
 }
 
 
@@ -250,6 +317,63 @@ void Foam::foamDEM::dividedVoidFraction::distribute
 
         const point& x = p.position[i];
         const scalar r = p.radius[i];
+
+        const auto shaped =
+            p.type.size() ? shapePoints_.cfind(p.type[i]) : shapePoints_.cend();
+        if (shaped.found())
+        {
+            // The shape's points, turned by the particle's orientation
+            const List<vector>& body = shaped.val();
+            const tensor& R = p.orientation[i];
+            // Whole in its cell: the points lie in the box of their extents
+            // (body frame), convex like the cell, so its corners decide
+            const vector& e = shapeExtent_[p.type[i]];
+            bool whole = withinCell(x, shapeReach_[p.type[i]], own);
+            for (label c = 0; !whole && c < 8; ++c)
+            {
+                const vector corner
+                (
+                    (c & 1 ? 1 : -1)*e.x(),
+                    (c & 2 ? 1 : -1)*e.y(),
+                    (c & 4 ? 1 : -1)*e.z()
+                );
+                if (!withinCell(x + (R & corner), 0, own)) break;
+                if (c == 7) whole = true;
+            }
+            if (whole)
+            {
+                ++nFastParticles_;
+                w.append(own, 1);
+                w.endParticle();
+                continue;
+            }
+            DynamicList<label> shapeCells(8);
+            DynamicList<label> shapeCounts(8);
+            // Neighbouring points lie in the same or the next cell: each
+            // walk starts from the previous point's cell
+            label from = own;
+            for (const vector& b : body)
+            {
+                const label celli = locatePoint(x + (R & b), from, true);
+                from = celli;
+                const label k = shapeCells.find(celli);
+                if (k < 0)
+                {
+                    shapeCells.append(celli);
+                    shapeCounts.append(1);
+                }
+                else
+                {
+                    ++shapeCounts[k];
+                }
+            }
+            forAll(shapeCells, k)
+            {
+                w.append(shapeCells[k], scalar(shapeCounts[k])/body.size());
+            }
+            w.endParticle();
+            continue;
+        }
 
         if (pointsInsideCell(x, r, own))
         {
@@ -292,6 +416,7 @@ void Foam::foamDEM::dividedVoidFraction::distribute
             << nFastParticles_ << ", walk steps " << nWalkSteps_
             << ", tree searches " << nTreeSearches_ << ", cyclic crossings "
             << nPeriodicCrossings_ << ", points outside to own cell "
-            << nOutside_ << endl;
+            << nOutside_ << ", shape points beyond a wall to the wall cell "
+            << nAtWalls_ << endl;
     }
 }

@@ -107,6 +107,7 @@ int main(int argc, char *argv[])
 
         // Stop on NaN/Inf, writing the last good step
         coupling.checkFluidFinite(U, p);
+        coupling.measureFluidImpulse(U);
 
         #include "reportFlow.H"
 

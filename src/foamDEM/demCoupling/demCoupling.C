@@ -530,6 +530,8 @@ Foam::foamDEM::demCoupling::demCoupling
     ),
     nOutside_(0),
     checkMomentumBalance_(dict_.getOrDefault("checkMomentumBalance", false)),
+    fluidImpulse_(Zero),
+    haveFluidImpulse_(false),
     logExchange_(dict_.getOrDefault("logExchange", false))
 {
     Info<< nl << "foamDEM: CFD-DEM coupling, model type "
@@ -739,11 +741,51 @@ void Foam::foamDEM::demCoupling::update()
 
 void Foam::foamDEM::demCoupling::evolve()
 {
+    // Impulse balance: measured on the DEM side, from the particles' total
+    // momentum before and after the interval, less gravity's and the
+    // uncoupled forces' impulse (their reaction is not in the fluid's
+    // source); the coupled forces are held over the interval, so the held
+    // values give that impulse
+    vector P0(Zero), uncoupled(Zero);
+    if (checkMomentumBalance_)
+    {
+        P0 = engine_->totalMomentum();
+        const particleData& p = particles_;
+        forAll(p.cell, i)
+        {
+            if (p.cell[i] >= 0) uncoupled += p.uncoupledForce[i];
+        }
+        reduce(uncoupled, sumOp<vector>());
+    }
     {
         scopedTimer timer(timers_.dem);
         engine_->advance(couplingInterval_);
     }
+    if (checkMomentumBalance_)
+    {
+        const scalar dt = couplingInterval_*engine_->timeStep();
+        const vector Jp =
+            engine_->totalMomentum() - P0
+          - (engine_->totalMass()*engine_->gravity() + uncoupled)*dt;
+        if (haveFluidImpulse_)
+        {
+            const scalar scale =
+                max(mag(Jp), max(mag(fluidImpulse_), VSMALL));
+            Info<< "foamDEM impulse balance: particles received " << Jp
+                << " N s over the DEM interval, the fluid " << fluidImpulse_
+                << " N s in its step, relative mismatch "
+                << mag(Jp + fluidImpulse_)/scale << endl;
+        }
+    }
     update();
+}
+
+
+void Foam::foamDEM::demCoupling::measureFluidImpulse(const volVectorField& U)
+{
+    if (!checkMomentumBalance_) return;
+    fluidImpulse_ = mesh_.time().deltaTValue()*totalFluidSource(U);
+    haveFluidImpulse_ = true;
 }
 
 

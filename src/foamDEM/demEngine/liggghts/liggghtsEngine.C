@@ -460,6 +460,30 @@ Foam::labelList Foam::foamDEM::liggghtsEngine::freeAtoms() const
 }
 
 
+Foam::vector Foam::foamDEM::liggghtsEngine::totalMomentum() const
+{
+    // Over the atoms (the spheres of a body carry its motion)
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    double local[3] = {0, 0, 0}, global[3];
+    for (int i = 0; i < atom.nlocal; ++i)
+    {
+        for (int d = 0; d < 3; ++d) local[d] += atom.rmass[i]*atom.v[i][d];
+    }
+    MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_SUM, lmp_->world);
+    return vector(global[0], global[1], global[2]);
+}
+
+
+Foam::scalar Foam::foamDEM::liggghtsEngine::totalMass() const
+{
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    double local = 0, global = 0;
+    for (int i = 0; i < atom.nlocal; ++i) local += atom.rmass[i];
+    MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_SUM, lmp_->world);
+    return global;
+}
+
+
 Foam::label Foam::foamDEM::liggghtsEngine::nLocal() const
 {
     return nBodies() + freeAtoms().size();

@@ -95,6 +95,34 @@ add_test(NAME demArrays.explicitDrag
 set_tests_properties(demArrays.explicitDrag PROPERTIES
     LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_explicit)
 
+# The particle data foamDEM allocated in the first exchange (sizes asked of
+# the arrays): a drag-only scene has no spin, orientation, torque, type or
+# density; explicit coupling has no K_p array
+add_test(NAME particleArrays.implicitDrag
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkDEMArrays
+            ${FOAMDEM_WORK}/settlingSphere_schillerNaumann/log.pisoDEMFoam
+            "position velocity radius implicitCoeff explicitForce"
+            "angularVelocity orientation torque type density"
+            "foamDEM particle arrays after the first exchange")
+set_tests_properties(particleArrays.implicitDrag PROPERTIES
+    LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_schillerNaumann)
+add_test(NAME particleArrays.explicitDrag
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkDEMArrays
+            ${FOAMDEM_WORK}/settlingSphere_explicit/log.pisoDEMFoam
+            "position velocity radius explicitForce"
+            "implicitCoeff angularVelocity orientation torque type density"
+            "foamDEM particle arrays after the first exchange")
+set_tests_properties(particleArrays.explicitDrag PROPERTIES
+    LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_explicit)
+add_test(NAME particleArrays.magnusLift
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkDEMArrays
+            ${FOAMDEM_WORK}/settlingSphere_magnus/log.pisoDEMFoam
+            "position velocity radius angularVelocity implicitCoeff"
+            "orientation torque type density"
+            "foamDEM particle arrays after the first exchange")
+set_tests_properties(particleArrays.magnusLift PROPERTIES
+    LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_magnus)
+
 # Parallel: the sphere's cell is on CFD rank 0 while LIGGGHTS holds it on
 # rank 1, so it moves between ranks every step; np = 1 and np = 2 agree
 add_test(NAME parallel.settlingSphere.np2

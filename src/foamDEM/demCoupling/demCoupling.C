@@ -532,6 +532,7 @@ Foam::foamDEM::demCoupling::demCoupling
     checkMomentumBalance_(dict_.getOrDefault("checkMomentumBalance", false)),
     fluidImpulse_(Zero),
     haveFluidImpulse_(false),
+    reportedArrays_(false),
     logExchange_(dict_.getOrDefault("logExchange", false))
 {
     Info<< nl << "foamDEM: CFD-DEM coupling, model type "
@@ -735,6 +736,13 @@ void Foam::foamDEM::demCoupling::update()
     {
         scopedTimer timer(timers_.push);
         engine_->push(plan_, particles_);
+    }
+    if (!reportedArrays_)
+    {
+        // What the first exchange allocated (master's particles)
+        Info<< "foamDEM particle arrays after the first exchange: "
+            << particles_.describeArrays().c_str() << endl;
+        reportedArrays_ = true;
     }
 }
 

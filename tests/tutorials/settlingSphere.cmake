@@ -79,49 +79,33 @@ add_test(NAME exchangePlan.explicitDrag
 set_tests_properties(exchangePlan.explicitDrag PROPERTIES
     LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_explicit)
 
-# The same scenes, asked of LIGGGHTS: implicit drag has K_p and u_f but
-# no per-atom torque; explicit coupling has one force array (and the
-# torque array couple/cfd/force reads), none of the implicit fix's
-add_test(NAME demArrays.implicitDrag
-    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkDEMArrays
-            ${FOAMDEM_WORK}/settlingSphere_schillerNaumann/log.pisoDEMFoam
-            "dragforce Ksl uf" "hdtorque")
-set_tests_properties(demArrays.implicitDrag PROPERTIES
-    LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_schillerNaumann)
-add_test(NAME demArrays.explicitDrag
-    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkDEMArrays
-            ${FOAMDEM_WORK}/settlingSphere_explicit/log.pisoDEMFoam
-            "dragforce" "Ksl uf KslRotation ex KslExtra")
-set_tests_properties(demArrays.explicitDrag PROPERTIES
-    LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_explicit)
-
-# The particle data foamDEM allocated in the first exchange (sizes asked of
-# the arrays): a drag-only scene has no spin, orientation, torque, type or
-# density; explicit coupling has no K_p array
-add_test(NAME particleArrays.implicitDrag
-    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkDEMArrays
-            ${FOAMDEM_WORK}/settlingSphere_schillerNaumann/log.pisoDEMFoam
-            "position velocity radius implicitCoeff explicitForce"
-            "angularVelocity orientation torque type density"
-            "foamDEM particle arrays after the first exchange")
-set_tests_properties(particleArrays.implicitDrag PROPERTIES
-    LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_schillerNaumann)
-add_test(NAME particleArrays.explicitDrag
-    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkDEMArrays
-            ${FOAMDEM_WORK}/settlingSphere_explicit/log.pisoDEMFoam
-            "position velocity radius explicitForce"
-            "implicitCoeff angularVelocity orientation torque type density"
-            "foamDEM particle arrays after the first exchange")
-set_tests_properties(particleArrays.explicitDrag PROPERTIES
-    LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_explicit)
-add_test(NAME particleArrays.magnusLift
-    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkDEMArrays
-            ${FOAMDEM_WORK}/settlingSphere_magnus/log.pisoDEMFoam
-            "position velocity radius angularVelocity implicitCoeff"
-            "orientation torque type density"
-            "foamDEM particle arrays after the first exchange")
-set_tests_properties(particleArrays.magnusLift PROPERTIES
-    LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_magnus)
+# The arrays the scenes allocated, as they log them (checkDEMArrays NAME
+# FIXTURE PRESENT ABSENT [LINE]). Asked of LIGGGHTS (demArrays): implicit
+# drag has K_p and u_f but no per-atom torque; explicit coupling has one
+# force array (and the torque array couple/cfd/force reads), none of the
+# implicit fix's. foamDEM's particle data after the first exchange
+# (particleArrays): a drag-only scene has no spin, orientation, torque,
+# type or density; explicit coupling has no K_p array
+set(PARTICLE_ARRAYS "foamDEM particle arrays after the first exchange")
+function(add_array_check name fixture present absent)
+    add_test(NAME ${name}
+        COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkDEMArrays
+                ${FOAMDEM_WORK}/settlingSphere_${fixture}/log.pisoDEMFoam
+                "${present}" "${absent}" ${ARGN})
+    set_tests_properties(${name} PROPERTIES
+        LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_${fixture})
+endfunction()
+add_array_check(demArrays.implicitDrag schillerNaumann "dragforce Ksl uf" "hdtorque")
+add_array_check(demArrays.explicitDrag explicit "dragforce" "Ksl uf KslRotation ex KslExtra")
+add_array_check(particleArrays.implicitDrag schillerNaumann
+    "position velocity radius implicitCoeff explicitForce"
+    "angularVelocity orientation torque type density" "${PARTICLE_ARRAYS}")
+add_array_check(particleArrays.explicitDrag explicit
+    "position velocity radius explicitForce"
+    "implicitCoeff angularVelocity orientation torque type density" "${PARTICLE_ARRAYS}")
+add_array_check(particleArrays.magnusLift magnus
+    "position velocity radius angularVelocity implicitCoeff"
+    "orientation torque type density" "${PARTICLE_ARRAYS}")
 
 # Parallel: the sphere's cell is on CFD rank 0 while LIGGGHTS holds it on
 # rank 1, so it moves between ranks every step; np = 1 and np = 2 agree

@@ -260,20 +260,18 @@ Foam::foamDEM::dividedVoidFraction::dividedVoidFraction
                 corr::spherocylinder{sh.dim[0], sh.dim[1]}, nTarget
             );
         }
-        List<vector> body(pts.size());
-        scalar reach = 0;
-        forAll(body, k)
+        shapePoints s{List<vector>(pts.size()), 0, Zero};
+        forAll(s.points, k)
         {
-            body[k] = vector(pts[k][0], pts[k][1], pts[k][2]);
-            reach = max(reach, mag(body[k]));
+            const vector b(pts[k][0], pts[k][1], pts[k][2]);
+            s.points[k] = b;
+            s.reach = max(s.reach, mag(b));
+            s.extent = max(s.extent, cmptMag(b));
         }
         Info<< "    " << typeName << ": type " << iter.key() << " spread"
-            << " over " << body.size() << " sub-volumes of its shape" << endl;
-        vector extent(Zero);
-        for (const vector& b : body) extent = max(extent, cmptMag(b));
-        shapePoints_.set(iter.key(), body);
-        shapeReach_.set(iter.key(), reach);
-        shapeExtent_.set(iter.key(), extent);
+            << " over " << s.points.size() << " sub-volumes of its shape"
+            << endl;
+        shapes_.set(iter.key(), s);
     }
 }
 
@@ -287,7 +285,7 @@ void Foam::foamDEM::dividedVoidFraction::addRequirements
 {
     plan.need(quantity::position, typeName);
     plan.need(quantity::radius, typeName);
-    if (shapePoints_.size())
+    if (shapes_.size())
     {
         plan.need(quantity::type, typeName);
         plan.need(quantity::orientation, typeName);
@@ -319,17 +317,17 @@ void Foam::foamDEM::dividedVoidFraction::distribute
         const scalar r = p.radius[i];
 
         const auto shaped =
-            p.type.size() ? shapePoints_.cfind(p.type[i]) : shapePoints_.cend();
+            p.type.size() ? shapes_.cfind(p.type[i]) : shapes_.cend();
         if (shaped.found())
         {
             // The shape's points, turned by the particle's orientation
-            const List<vector>& body = shaped.val();
+            const List<vector>& body = shaped.val().points;
+            const vector& e = shaped.val().extent;
             const tensor& R = p.orientation[i];
             // Whole in its cell: the points lie in the box of their extents
             // (body frame), convex like the cell, so its corners decide
-            const vector& e = shapeExtent_[p.type[i]];
-            bool whole = withinCell(x, shapeReach_[p.type[i]], own);
-            for (label c = 0; !whole && c < 8; ++c)
+            bool whole = withinCell(x, shaped.val().reach, own);
+            for (label c = 0; c < 8 && !whole; ++c)
             {
                 const vector corner
                 (
@@ -338,7 +336,7 @@ void Foam::foamDEM::dividedVoidFraction::distribute
                     (c & 4 ? 1 : -1)*e.z()
                 );
                 if (!withinCell(x + (R & corner), 0, own)) break;
-                if (c == 7) whole = true;
+                whole = (c == 7);
             }
             if (whole)
             {

@@ -17,7 +17,7 @@ endforeach()
 # momentum exchange at every coupling step
 add_test(NAME settlingSphere.explicitCoupling
     COMMAND ${VARIANT} settlingSphere ${FOAMDEM_WORK}/settlingSphere_explicit
-            "foamDictionary ${CP} -entry momentumCoupling -set explicit" -ci)
+            "foamDictionary ${CP} -entry momentumCoupling -set explicit && foamDictionary ${CP} -entry progressInterval -add 30" -ci)
 add_test(NAME settlingSphere.modelB
     COMMAND ${VARIANT} settlingSphere ${FOAMDEM_WORK}/settlingSphere_modelB
             "foamDictionary ${CP} -entry modelType -set B && sed -i 's/ archimedes pressureGradient)/ archimedes)/' Allrun"
@@ -53,6 +53,21 @@ foreach(v explicit modelB magnus)
     set_tests_properties(impulseBalance.${v} PROPERTIES
         LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_${v})
 endforeach()
+
+# Progress lines (runProgress.H) against the solver's own log: one every
+# progressInterval steps (default 100; 30 in the explicit variant), at the
+# solver's time of that step and its fraction of endTime, the split adding
+# up to 100 %, the final summary's DEM share the timers' DEM time.
+# Seen failing with the line's time taken one step late (t + deltaT)
+set(PROGRESS ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkProgress)
+add_test(NAME progress.default
+    COMMAND ${PROGRESS} ${FOAMDEM_WORK}/settlingSphere_schillerNaumann/log.pisoDEMFoam 100)
+add_test(NAME progress.interval30
+    COMMAND ${PROGRESS} ${FOAMDEM_WORK}/settlingSphere_explicit/log.pisoDEMFoam 30)
+set_tests_properties(progress.default PROPERTIES
+    LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_schillerNaumann)
+set_tests_properties(progress.interval30 PROPERTIES
+    LABELS integration TIMEOUT 30 FIXTURES_REQUIRED settling_explicit)
 
 # Particles written as a lagrangian cloud that foamToVTK exports
 add_test(NAME particleOutput.foamToVTK

@@ -533,7 +533,8 @@ Foam::foamDEM::demCoupling::demCoupling
     fluidImpulse_(Zero),
     haveFluidImpulse_(false),
     reportedArrays_(false),
-    logExchange_(dict_.getOrDefault("logExchange", false))
+    logExchange_(dict_.getOrDefault("logExchange", false)),
+    progress_(mesh_.time(), dict_)
 {
     Info<< nl << "foamDEM: CFD-DEM coupling, model type "
         << modelTypeNames[modelType_] << endl;
@@ -620,6 +621,7 @@ Foam::foamDEM::demCoupling::demCoupling
     alpha_.oldTime();
 
     stabilityGuard(*this, dict_.subOrEmptyDict("stabilityGuard")).check();
+    progress_.start();
 }
 
 
@@ -634,6 +636,20 @@ Foam::foamDEM::demCoupling::~demCoupling()
         << ", void fraction " << t.voidFraction
         << ", forces " << t.forces << ", push " << t.push
         << "), particle output " << t.output << endl;
+    progress_.summary(splitSoFar());
+}
+
+
+Foam::foamDEM::runProgress::split
+Foam::foamDEM::demCoupling::splitSoFar() const
+{
+    const timers& t = timers_;
+    runProgress::split s;
+    s.dem = t.dem;
+    s.coupling =
+        t.pull + t.locate + t.transfer + t.voidFraction + t.forces + t.push;
+    s.output = t.output;
+    return s;
 }
 
 
@@ -754,6 +770,8 @@ void Foam::foamDEM::demCoupling::evolve()
     // uncoupled forces' impulse (their reaction is not in the fluid's
     // source); the coupled forces are held over the interval, so the held
     // values give that impulse
+    progress_.step(splitSoFar());
+
     vector P0(Zero), uncoupled(Zero);
     if (checkMomentumBalance_)
     {

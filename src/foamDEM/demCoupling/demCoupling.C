@@ -525,7 +525,14 @@ Foam::foamDEM::demCoupling::demCoupling
     ),
     gradp_
     (
-        IOobject("gradp", mesh_.time().timeName(), mesh_),
+        IOobject
+        (
+            "gradp",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
         fvc::grad(p)
     ),
     nOutside_(0),
@@ -534,7 +541,9 @@ Foam::foamDEM::demCoupling::demCoupling
     haveFluidImpulse_(false),
     reportedArrays_(false),
     logExchange_(dict_.getOrDefault("logExchange", false)),
-    progress_(mesh_.time(), dict_)
+    progress_(mesh_.time(), dict_),
+    writeDEMRestart_(dict_.getOrDefault("writeDEMRestart", true)),
+    skipPush_(false)
 {
     Info<< nl << "foamDEM: CFD-DEM coupling, model type "
         << modelTypeNames[modelType_] << endl;
@@ -577,6 +586,8 @@ Foam::foamDEM::demCoupling::demCoupling
         g_ = g.value();
     }
 
+    readPressureGradient();
+
     // Models
     engine_ = demEngine::New(mesh_.time(), dict_);
     locate_ = locateModel::New(dict_, mesh_);
@@ -616,8 +627,18 @@ Foam::foamDEM::demCoupling::demCoupling
         << couplingInterval_ << " DEM steps per CFD step, "
         << engine_->nGlobal() << " particles" << nl << endl;
 
-    // Coupling terms for the first DEM interval
+    // Coupling terms for the first DEM interval. A DEM continued from the
+    // library's restart holds the ones the writing run pushed at that time
+    // (computed from the fluid of the step before it): they are kept, so
+    // that the continued run repeats the straight one
+    if (engine_->continued())
+    {
+        Info<< "    continued run: the DEM keeps the coupling terms of its"
+            << " restart for the first interval" << endl;
+        skipPush_ = true;
+    }
     update();
+    skipPush_ = false;
     alpha_.oldTime();
 
     stabilityGuard(*this, dict_.subOrEmptyDict("stabilityGuard")).check();
@@ -637,6 +658,65 @@ Foam::foamDEM::demCoupling::~demCoupling()
         << ", forces " << t.forces << ", push " << t.push
         << "), particle output " << t.output << endl;
     progress_.summary(splitSoFar());
+}
+
+
+void Foam::foamDEM::demCoupling::readPressureGradient()
+{
+    // Written with the fields: a continued run reads the gradient of the
+    // last pressure correction, the one the run that wrote it gave the
+    // particles at the next step (fvc::grad(p) is not the conductance-
+    // consistent gradient of the pressure scheme)
+    IOobject io
+    (
+        "gradp",
+        mesh_.time().timeName(),
+        mesh_,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (io.typeHeaderOk<volVectorField>(true))
+    {
+        gradp_ == volVectorField(io, mesh_);
+        Info<< "    particles' pressure gradient read from "
+            << mesh_.time().timeName() << "/gradp" << endl;
+    }
+}
+
+
+void Foam::foamDEM::demCoupling::writeDEMRestart()
+{
+    const Time& runTime = mesh_.time();
+    const fileName file(demEngine::restartFile(runTime, runTime.timeName()));
+    if (Pstream::master())
+    {
+        mkDir(file.path());
+    }
+    engine_->writeRestart(file);
+    writtenRestarts_.append(file);
+
+    // Rotated with the fields: OpenFOAM's purgeWrite keeps the newest N
+    // time directories this run wrote; so do the DEM restarts
+    const label purge =
+        runTime.controlDict().getOrDefault<label>("purgeWrite", 0);
+    if (purge > 0 && writtenRestarts_.size() > purge)
+    {
+        const label nOld = writtenRestarts_.size() - purge;
+        if (Pstream::master())
+        {
+            for (label i = 0; i < nOld; ++i)
+            {
+                rm(writtenRestarts_[i]);
+            }
+        }
+        DynamicList<fileName> kept(purge);
+        for (label i = nOld; i < writtenRestarts_.size(); ++i)
+        {
+            kept.append(writtenRestarts_[i]);
+        }
+        writtenRestarts_.transfer(kept);
+    }
 }
 
 
@@ -749,9 +829,15 @@ void Foam::foamDEM::demCoupling::update()
                 << ", bytes sent " << transfer_->bytesSent() << endl;
         }
     }
+    if (!skipPush_)
     {
         scopedTimer timer(timers_.push);
         engine_->push(plan_, particles_);
+    }
+    if (writeDEMRestart_ && mesh_.time().writeTime())
+    {
+        scopedTimer timer(timers_.output);
+        writeDEMRestart();
     }
     if (!reportedArrays_)
     {

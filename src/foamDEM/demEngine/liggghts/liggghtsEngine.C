@@ -150,6 +150,7 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
     }
     implicitDrag_ = (dragIntegration == "implicit");
     shapedSpheres_ = dict.getOrDefault<bool>("shapedSpheres", false);
+    keepHeld_ = couplingDict.getOrDefault<bool>("writeDEMRestart", true);
 
     // Paths are relative to the (undecomposed) case directory
     const fileName caseDir(runTime.globalPath());
@@ -211,6 +212,31 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
         {
             std::setvbuf(tee, nullptr, _IOLBF, 0);
             lmp_->screen = tee;
+        }
+    }
+
+    // Continuation: the library's restart of the start time, if the case
+    // has one, is offered to the script as the index variable
+    // foamDEMRestart (the script's own "variable foamDEMRestart index
+    // <fresh start file>" is then ignored) with foamDEMContinued 1
+    {
+        const fileName restart(restartFile(runTime, runTime.timeName()));
+        continued_ = isFile(restart);
+        run
+        (
+            "variable foamDEMContinued index " + word(continued_ ? "1" : "0"),
+            "defining foamDEMContinued"
+        );
+        if (continued_)
+        {
+            run
+            (
+                "variable foamDEMRestart index " + restart.relative(caseDir),
+                "defining foamDEMRestart"
+            );
+            Info<< "    LIGGGHTS: continuing from the DEM restart "
+                << restart.relative(caseDir) << " (foamDEMRestart,"
+                << " foamDEMContinued 1)" << endl;
         }
     }
 
@@ -349,9 +375,40 @@ void Foam::foamDEM::liggghtsEngine::prepare(const exchangePlan& plan)
         run(cmd, "adding the coupling force fix");
     }
 
+    // The per-atom force and torque the DEM holds between two runs, kept
+    // in the restarts (writeRestart): a continued run starts its first
+    // step from them, as the run that wrote the restart did (the set-up
+    // of a run recomputes them, with the coupling terms of the new
+    // interval instead of the old ones)
+    if (keepHeld_ || continued_)
+    {
+        run
+        (
+            "fix foamDEM_heldForce all property/atom foamDEMHeldForce vector"
+            " yes no no 0 0 0",
+            "adding the held force"
+        );
+        run
+        (
+            "fix foamDEM_heldTorque all property/atom foamDEMHeldTorque"
+            " vector yes no no 0 0 0",
+            "adding the held torque"
+        );
+    }
+
     // Set the DEM up now (neighbour lists, fix gravity), so that errors
     // surface at start-up and gravity() is known
     run("run 0", "setting up the DEM");
+
+    if (continued_)
+    {
+        // Back to the forces and torques of the restart's time; the first
+        // interval continues without a new set-up
+        copyHeld(false);
+        firstRun_ = false;
+        Info<< "    LIGGGHTS: continued run: the first step starts from the"
+            << " forces and torques held at the restart's time" << endl;
+    }
 
     // What exists, per atom, for the coupling (asked of LIGGGHTS, not
     // derived from the plan)
@@ -963,8 +1020,34 @@ Foam::labelList Foam::foamDEM::liggghtsEngine::particleTypes() const
 }
 
 
+void Foam::foamDEM::liggghtsEngine::copyHeld(bool toRestart)
+{
+    double** heldF = vectorProperty("foamDEMHeldForce");
+    double** heldT = vectorProperty("foamDEMHeldTorque");
+    LAMMPS_NS::Atom& atom = *lmp_->atom;
+    if (!heldF || !heldT || !atom.f || !atom.torque) return;
+    for (int i = 0; i < atom.nlocal; ++i)
+    {
+        for (int k = 0; k < 3; ++k)
+        {
+            if (toRestart)
+            {
+                heldF[i][k] = atom.f[i][k];
+                heldT[i][k] = atom.torque[i][k];
+            }
+            else
+            {
+                atom.f[i][k] = heldF[i][k];
+                atom.torque[i][k] = heldT[i][k];
+            }
+        }
+    }
+}
+
+
 void Foam::foamDEM::liggghtsEngine::writeRestart(const fileName& file)
 {
+    copyHeld(true);
     mkDir(file.path());
     run("write_restart " + file, "writing the DEM restart " + file);
 }

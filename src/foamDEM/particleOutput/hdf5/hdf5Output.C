@@ -120,11 +120,18 @@ void Foam::foamDEM::hdf5Output::write
     {
         if (!allRanks(ok))
         {
-            if (ok) Foam::sleep(2);
+            if (ok)
+            {
+                Foam::sleep(2);
+                FatalErrorInFunction
+                    << "HDF5 particle output: another rank failed, for "
+                    << path << " (this rank: " << step.c_str() << ")"
+                    << exit(FatalError);
+            }
             FatalErrorInFunction
                 << "HDF5 particle output: " << step.c_str() << " failed for "
-                << path << (ok ? " on another rank" : " on this rank")
-                << " (HDF5's message above, if any)" << exit(FatalError);
+                << path << " on this rank (HDF5's message above, if any)"
+                << exit(FatalError);
         }
     };
 
@@ -148,6 +155,9 @@ void Foam::foamDEM::hdf5Output::write
         dxpl >= 0 && H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE) >= 0,
         "setting up collective writes"
     );
+
+    // The first dataset whose write failed on this rank
+    std::string writeError;
 
     // One dataset of nTotal x nComp values (nComp 1: a 1-D dataset), this
     // rank's rows from 'offset'; every rank calls it, empty ones select none
@@ -189,7 +199,13 @@ void Foam::foamDEM::hdf5Output::write
         }
         // Agree before the collective write: a rank that cannot take part
         // would leave the others waiting in it
-        check(ok, std::string("creating dataset ") + name);
+        check
+        (
+            ok && writeError.empty(),
+            writeError.empty()
+          ? std::string("creating dataset ") + name
+          : "writing dataset " + writeError
+        );
         static const double dummy[9] = {};
         ok = H5Dwrite
         (
@@ -198,7 +214,8 @@ void Foam::foamDEM::hdf5Output::write
         H5Sclose(mspace);
         H5Dclose(dset);
         H5Sclose(fspace);
-        check(ok, std::string("writing dataset ") + name);
+        // Checked with the next step that needs the ranks to agree
+        if (!ok && writeError.empty()) writeError = name;
     };
 
     // Gather this rank's rows of a per-particle quantity and write it
@@ -261,6 +278,7 @@ void Foam::foamDEM::hdf5Output::write
         writeVectors("Us", [&](label i) { return Us[p.cell[i]]; });
     }
     H5Pclose(dxpl);
+    check(writeError.empty(), "writing dataset " + writeError);
 
     // Attributes on the root group (collective, the same on every rank)
     auto writeAttribute = [&](const char* name, hid_t type, const void* v)

@@ -27,3 +27,19 @@ add_test(NAME particleOutput.hdf5.paraview
 set_tests_properties(particleOutput.hdf5.paraview PROPERTIES
     LABELS integration TIMEOUT 120 FIXTURES_REQUIRED hdf5_np2
     SKIP_RETURN_CODE 77)
+
+# A scene that exchanges angular velocities (magnusLift) writes them; on 2
+# ranks with the sphere's cell on rank 0 and its DEM atom on rank 1 (rank 1
+# writes an empty selection); the plan still pulls no orientation
+add_test(NAME particleOutput.hdf5.magnusLift.np2
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/runVariant settlingSphere
+            ${FOAMDEM_WORK}/hdf5_magnus
+            "foamDictionary constant/couplingProperties -entry forceModels -set '(schillerNaumann archimedes pressureGradient magnusLift)' && foamDictionary constant/couplingProperties -entry particleOutput -set '(cloud hdf5)' && foamDictionary constant/couplingProperties -entry hdf5Coeffs -set '{ couplingFields true; }' && sed -i 's/^variable x0     equal 0.02$/variable x0     equal 0.012/' DEM/parameters"
+            -ci -np 2)
+set_tests_properties(particleOutput.hdf5.magnusLift.np2 PROPERTIES
+    LABELS "integration;parallel" TIMEOUT 300 PROCESSORS 2
+    FIXTURES_SETUP hdf5_magnus)
+add_test(NAME particleOutput.hdf5.magnusLift.check
+    COMMAND ${HDF5_CHECK} ${FOAMDEM_WORK}/hdf5_magnus 2 --case --rotating)
+set_tests_properties(particleOutput.hdf5.magnusLift.check PROPERTIES
+    LABELS integration TIMEOUT 60 FIXTURES_REQUIRED hdf5_magnus)

@@ -43,3 +43,17 @@ add_test(NAME particleOutput.hdf5.magnusLift.check
     COMMAND ${HDF5_CHECK} ${FOAMDEM_WORK}/hdf5_magnus 2 --case --rotating)
 set_tests_properties(particleOutput.hdf5.magnusLift.check PROPERTIES
     LABELS integration TIMEOUT 60 FIXTURES_REQUIRED hdf5_magnus)
+
+# No particles at all on 2 ranks: empty datasets (no collective write to
+# make), an XDMF of empty grids that ParaView opens
+add_test(NAME particleOutput.hdf5.empty.np2
+    COMMAND ${HDF5_CHECK} ${FOAMDEM_WORK}/hdf5Empty 2 --layers 0)
+set_tests_properties(particleOutput.hdf5.empty.np2 PROPERTIES
+    LABELS "integration;parallel" TIMEOUT 300 PROCESSORS 2
+    FIXTURES_SETUP hdf5_empty)
+add_test(NAME particleOutput.hdf5.empty.paraview
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkHDF5ParaView
+            ${FOAMDEM_WORK}/hdf5Empty/np2)
+set_tests_properties(particleOutput.hdf5.empty.paraview PROPERTIES
+    LABELS integration TIMEOUT 120 FIXTURES_REQUIRED hdf5_empty
+    SKIP_RETURN_CODE 77)

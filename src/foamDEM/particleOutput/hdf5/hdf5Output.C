@@ -206,8 +206,10 @@ void Foam::foamDEM::hdf5Output::write
           ? std::string("creating dataset ") + name
           : "writing dataset " + writeError
         );
+        // No particles on any rank: the empty dataset has no storage to
+        // write to (HDF5 refuses the write); the same on every rank
         static const double dummy[9] = {};
-        ok = H5Dwrite
+        ok = nTotal == 0 || H5Dwrite
         (
             dset, memType, mspace, fspace, dxpl, nLocal ? data : dummy
         ) >= 0;

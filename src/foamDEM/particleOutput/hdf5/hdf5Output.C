@@ -102,6 +102,16 @@ void Foam::foamDEM::hdf5Output::write
     const scalar time = mesh_.time().value();
     const fileName path(directory()/h5Name(timeName));
 
+    int mpiUp = 0;
+    MPI_Initialized(&mpiUp);
+    if (!mpiUp)
+    {
+        // The DEM engine starts MPI, also in a serial run
+        FatalErrorInFunction
+            << "particleOutput hdf5 needs MPI, which the DEM engine has not"
+            << " started" << exit(FatalError);
+    }
+
     // The particles in this rank's mesh, and this rank's rows of the file
     DynamicList<label> rows(p.size());
     forAll(p.cell, i)

@@ -8,7 +8,9 @@ Each benchmark runs with its baseline in the same invocation:
   3. the coupling share of the wall time,
   4. DPMFoam's Goldschmidt tutorial vs. a foamDEM counterpart,
   5. np = 2 vs np = 1 speed-up and the exchange bytes (two sizes),
-  6. peak RSS per particle and per cell beyond LIGGGHTS and OpenFOAM alone.
+  6. peak RSS per particle and per cell beyond LIGGGHTS and OpenFOAM alone,
+  7. particle output: time and size per write of particleOutput hdf5
+     against the lagrangian cloud (np 1 and np 2).
 Results: bench/results/<date>/table.md (+ raw.json, work/ with the runs).
 
 The fluidBed case (bench/cases/fluidBed): 2 mm glass spheres (2500 kg/m^3)
@@ -278,6 +280,43 @@ def goldschmidt(work, simTime):
 
 # ---------------------------------------------------------------------------
 
+def outputs(work, nLayers, steps, np, repeat=1, writes=5):
+    """The fluidBed run written 'writes' times, with particleOutput (cloud)
+    and with (hdf5), the two interleaved 'repeat' times (the fastest kept);
+    per kind: the run, the writes, the time per write (foamDEM's particle
+    output timer) and the bytes per write (the lagrangian directories,
+    binary as the case writes; the .h5 files and the XDMF)."""
+    res = {}
+    every = max(1, steps // INTERVAL // writes)
+    cases = {}
+    for kind in ("cloud", "hdf5"):
+        d, _ = fluidbed(work, "output_%s_np%d" % (kind, np), nLayers, steps, np=np)
+        fd = lambda *a: run(["foamDictionary"] + list(a), d, "log.foamDictionary")
+        fd("system/controlDict", "-entry", "writeInterval", "-set", str(every))
+        fd("constant/couplingProperties", "-entry", "particleOutput", "-set",
+           "(%s)" % kind)
+        cases[kind] = d
+    runs = {"cloud": [], "hdf5": []}
+    for k in range(repeat):
+        for kind in ("cloud", "hdf5"):
+            runs[kind].append(coupled(cases[kind], np=np, log="log.pisoDEMFoam.%d" % k))
+    for kind, d in cases.items():
+        r = min(runs[kind], key=lambda x: x["timers"]["output"])
+        root = os.path.join(d, "processor0") if np > 1 else d
+        times = [t for t in os.listdir(root)
+                 if re.fullmatch(r"[0-9.eE+-]+", t) and float(t) > 0]
+        size = 0
+        for dirpath, _, files in os.walk(d):
+            if ("/lagrangian" in dirpath and kind == "cloud") or \
+               (dirpath.endswith("/hdf5") and kind == "hdf5"):
+                size += sum(os.path.getsize(os.path.join(dirpath, f)) for f in files)
+        r["writes"] = len(times)
+        r["bytes"] = size
+        r["perWrite"] = r["timers"]["output"] / max(len(times), 1)
+        res[kind] = r
+    return res
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -286,7 +325,7 @@ def main():
     ap.add_argument("--quick", action="store_true", help="small size, few steps (< 5 min)")
     ap.add_argument("--dpm-time", type=float, help="simulated time of the Goldschmidt runs [s]")
     ap.add_argument("--repeat", type=int, help="runs of the timed np 1 / standalone / np 2 cases, best kept (default 2, --quick 1)")
-    ap.add_argument("--only", default="", help="comma list of benchmarks 1-6 (default all)")
+    ap.add_argument("--only", default="", help="comma list of benchmarks 1-7 (default all)")
     ap.add_argument("--out", help="results directory (default bench/results/<date>)")
     a = ap.parse_args()
     size = a.size or (5000 if a.quick else 25000)
@@ -294,7 +333,7 @@ def main():
     repeat = a.repeat or (1 if a.quick else 2)
     steps = max(INTERVAL, steps // INTERVAL * INTERVAL)
     dpmTime = a.dpm_time or (0.001 if a.quick else 0.005)
-    only = set(a.only.split(",")) if a.only else set("123456")
+    only = set(a.only.split(",")) if a.only else set("1234567")
     nLayers = max(1, int(round(size / PER_LAYER)))
     stamp = datetime.datetime.now().strftime("%Y-%m-%d_%H%M%S")
     out = a.out or os.path.join(BENCH, "results", stamp)
@@ -366,6 +405,10 @@ def main():
     if only & set("4"):
         say("[4] DPMFoam Goldschmidt vs foamDEM, %g s simulated ..." % dpmTime)
         R["goldschmidt"] = goldschmidt(work, dpmTime)
+    if only & set("7"):
+        for n in (1, 2):
+            say("[7] particle output, cloud vs hdf5, np = %d ..." % n)
+            R["output_np%d" % n] = outputs(work, nLayers, steps, n, repeat)
     R["loadEnd"] = loadavg()
     json.dump(R, open(os.path.join(out, "raw.json"), "w"), indent=1)
     table(R, out)
@@ -464,6 +507,21 @@ def table(R, out):
                         m["piso_r3"]["rssKiB"], m["piso_r1"]["rssKiB"], nc),
                      "<= 1024 B/particle, <= 2048 B/cell",
                      "yes" if perP <= 1024 and perC <= 2048 else "NO", "-"))
+    for n in (1, 2):
+        if "output_np%d" % n not in R:
+            continue
+        o = R["output_np%d" % n]
+        c, h = o["cloud"], o["hdf5"]
+        rows.append(("7 particle output per write, hdf5 / cloud (np %d)" % n,
+                     "time %.2f (%.2f ms vs %.2f ms), size %.2f (%.0f kB vs %.0f kB) per write "
+                     "of %d particles (%d and %d writes)"
+                     % (h["perWrite"] / c["perWrite"], 1e3 * h["perWrite"],
+                        1e3 * c["perWrite"], h["bytes"] / max(h["writes"], 1) /
+                        (c["bytes"] / max(c["writes"], 1)),
+                        h["bytes"] / max(h["writes"], 1) / 1e3,
+                        c["bytes"] / max(c["writes"], 1) / 1e3, c["particles"],
+                        h["writes"], c["writes"]),
+                     "-", "-", h["load"] + "; " + c["load"]))
     lines = ["# foamDEM benchmarks %s" % R["date"], "",
              "Host %s (%d cores); load (1/5/15 min) at start %s, at end %s." % (
                  R["host"], R["nproc"], R["loadStart"], R["loadEnd"]),

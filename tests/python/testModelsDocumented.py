@@ -40,6 +40,7 @@ KEYWORDS = {
     "forceModel": ("forceModels", "(noSuchModel)"),
     "momentumCouplingModel": ("momentumCoupling", "noSuchModel"),
     "pressureScheme": ("pressureScheme", "noSuchModel"),
+    "particleOutput": ("particleOutput", "(noSuchModel)"),
 }
 FV_OPTIONS = "fvOptions"
 

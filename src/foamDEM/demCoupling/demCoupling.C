@@ -478,7 +478,7 @@ Foam::foamDEM::demCoupling::demCoupling
     nuFluid_(0),
     g_(Zero),
     couplingInterval_(dict_.get<label>("couplingInterval")),
-    output_(mesh_, dict_.getOrDefault<word>("cloudName", "particles")),
+    outputs_(particleOutput::New(mesh_, dict_)),
     alpha_
     (
         IOobject
@@ -616,7 +616,10 @@ Foam::foamDEM::demCoupling::demCoupling
         f.addRequirements(plan_);
     }
     momentum_->addRequirements(plan_);
-    output_.addRequirements(plan_);
+    for (const particleOutput& o : outputs_)
+    {
+        o.addRequirements(plan_);
+    }
     plan_.print();
     engine_->prepare(plan_);
 
@@ -814,7 +817,10 @@ void Foam::foamDEM::demCoupling::update()
     if (mesh_.time().writeTime())
     {
         scopedTimer timer(timers_.output);
-        output_.write(particles_);
+        for (particleOutput& o : outputs_)
+        {
+            o.write(particles_, plan_);
+        }
     }
 
     if (transfer_)

@@ -1,8 +1,19 @@
-#include "particleOutput.H"
+#include "cloudOutput.H"
+#include "addToRunTimeSelectionTable.H"
 #include "passiveParticleCloud.H"
 #include "IOField.H"
 
-void Foam::foamDEM::particleOutput::addRequirements(exchangePlan& plan) const
+namespace Foam
+{
+namespace foamDEM
+{
+    defineTypeNameAndDebug(cloudOutput, 0);
+    addToRunTimeSelectionTable(particleOutput, cloudOutput, dictionary);
+}
+}
+
+
+void Foam::foamDEM::cloudOutput::addRequirements(exchangePlan& plan) const
 {
     const word who("particleOutput");
     plan.need(quantity::position, who);
@@ -12,7 +23,11 @@ void Foam::foamDEM::particleOutput::addRequirements(exchangePlan& plan) const
 }
 
 
-void Foam::foamDEM::particleOutput::write(const particleData& p) const
+void Foam::foamDEM::cloudOutput::write
+(
+    const particleData& p,
+    const exchangePlan&
+)
 {
     passiveParticleCloud cloud(mesh_, cloudName_, IDLList<passiveParticle>());
 

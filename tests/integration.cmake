@@ -30,3 +30,23 @@ foreach(bad ${BAD_CASES})
         set_tests_properties(badInput.${bad} PROPERTIES LABELS badInput TIMEOUT 60)
     endif()
 endforeach()
+
+# Bad input in a DEM-only stage (foamDEMLiggghts, the tutorials' packing):
+# the LIGGGHTS error and the failing command on stderr and in the log,
+# non-zero exit, every rank stopped
+execute_process(
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/badInput/runBadPacking --list
+    OUTPUT_VARIABLE BAD_PACKING OUTPUT_STRIP_TRAILING_WHITESPACE)
+string(REPLACE "\n" ";" BAD_PACKING "${BAD_PACKING}")
+foreach(bad ${BAD_PACKING})
+    add_test(NAME badInput.packing.${bad}
+        COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/badInput/runBadPacking ${bad}
+                ${FOAMDEM_WORK}/badInput/packing_${bad})
+    if(bad MATCHES "Parallel$")
+        set_tests_properties(badInput.packing.${bad} PROPERTIES
+            LABELS "badInput;parallel" TIMEOUT 60 PROCESSORS 2)
+    else()
+        set_tests_properties(badInput.packing.${bad} PROPERTIES
+            LABELS badInput TIMEOUT 60)
+    endif()
+endforeach()

@@ -542,7 +542,7 @@ Foam::foamDEM::demCoupling::demCoupling
     reportedArrays_(false),
     logExchange_(dict_.getOrDefault("logExchange", false)),
     progress_(mesh_.time(), dict_),
-    writeDEMRestart_(dict_.getOrDefault("writeDEMRestart", true)),
+    writeDEMRestart_(dict_.getOrDefault("writeDEMRestart", false)),
     skipPush_(false)
 {
     Info<< nl << "foamDEM: CFD-DEM coupling, model type "

@@ -150,7 +150,7 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
     }
     implicitDrag_ = (dragIntegration == "implicit");
     shapedSpheres_ = dict.getOrDefault<bool>("shapedSpheres", false);
-    keepHeld_ = couplingDict.getOrDefault<bool>("writeDEMRestart", true);
+    keepHeld_ = couplingDict.getOrDefault<bool>("writeDEMRestart", false);
 
     // Paths are relative to the (undecomposed) case directory
     const fileName caseDir(runTime.globalPath());

@@ -15,11 +15,7 @@ namespace foamDEM
 
 void Foam::foamDEM::cloudOutput::addRequirements(exchangePlan& plan) const
 {
-    const word who("particleOutput");
-    plan.need(quantity::position, who);
-    plan.need(quantity::velocity, who);
-    plan.need(quantity::radius, who);
-    plan.need(quantity::id, who);
+    needParticles(plan, "particleOutput");
 }
 
 

@@ -84,10 +84,7 @@ Foam::fileName Foam::foamDEM::hdf5Output::h5Name(const word& timeName) const
 void Foam::foamDEM::hdf5Output::addRequirements(exchangePlan& plan) const
 {
     const word who("hdf5Output");
-    plan.need(quantity::position, who);
-    plan.need(quantity::velocity, who);
-    plan.need(quantity::radius, who);
-    plan.need(quantity::id, who);
+    needParticles(plan, who);
     plan.need(quantity::type, who);
 }
 

@@ -692,33 +692,20 @@ void Foam::foamDEM::demCoupling::writeDEMRestart()
 {
     const Time& runTime = mesh_.time();
     const fileName file(demEngine::restartFile(runTime, runTime.timeName()));
-    if (Pstream::master())
-    {
-        mkDir(file.path());
-    }
     engine_->writeRestart(file);
-    writtenRestarts_.append(file);
+    writtenRestarts_.push(file);
 
-    // Rotated with the fields: OpenFOAM's purgeWrite keeps the newest N
-    // time directories this run wrote; so do the DEM restarts
+    // Rotated with the fields, as Time does for purgeWrite: the newest N
+    // restarts this run wrote are kept
     const label purge =
         runTime.controlDict().getOrDefault<label>("purgeWrite", 0);
-    if (purge > 0 && writtenRestarts_.size() > purge)
+    if (purge > 0 && writtenRestarts_.size() > label(purge))
     {
-        const label nOld = writtenRestarts_.size() - purge;
+        const fileName oldest(writtenRestarts_.pop());
         if (Pstream::master())
         {
-            for (label i = 0; i < nOld; ++i)
-            {
-                rm(writtenRestarts_[i]);
-            }
+            rm(oldest);
         }
-        DynamicList<fileName> kept(purge);
-        for (label i = nOld; i < writtenRestarts_.size(); ++i)
-        {
-            kept.append(writtenRestarts_[i]);
-        }
-        writtenRestarts_.transfer(kept);
     }
 }
 

@@ -189,7 +189,9 @@ def main():
         G0 = float(ergun.ergun_gradient(U, eps_cells, d, rho, mu))
         series = np.sum(w * G) / np.sum(w) / G0 - 1
         parallel = np.sum(w) / np.sum(w / G) / G0 - 1
+        dP_ergun = float(ergun.ergun_gradient(U, eps, d, rho, mu)) * L
         rows.append(dict(U=U, dP=dP, dP_e=dP_e, err=err, change=change,
+                         dP_ergun=dP_ergun, err_ergun=(dP - dP_ergun) / dP_ergun,
                          dP_bed=dP_bed, dP_bed_e=dP_bed_e,
                          err_bed=(dP_bed - dP_bed_e) / dP_bed_e,
                          cells=G0 / float(ergun.ergun_gradient(U, eps, d, rho, mu)) - 1,
@@ -243,7 +245,8 @@ def main():
     ]
     cols = ("U_m_s", "dP_Pa", "dP_Ergun_Pa", "error", "eps", "L_m", "t_s",
             "steadyChange", "dPbed_Pa", "dPbed_Ergun_Pa", "errorBed",
-            "epsCellsEffect", "seriesBound", "parallelBound")
+            "epsCellsEffect", "seriesBound", "parallelBound", "dP_ErgunLaw_Pa",
+            "errorVsErgun")
     with open(os.path.join(case, "results/summary.dat"), "w") as f:
         f.write("# ErgunPackedBed: pressure drop between two planes inside a frozen"
                 " packed bed vs Ergun\n")
@@ -251,13 +254,16 @@ def main():
             f.write("# %-18s %s\n" % (k, v))
         f.write("# dP between the planes; dPbed plenum to outlet vs Ergun(bedVoidFraction, H);"
                 " epsCellsEffect = Ergun(eps_cells)/Ergun(eps) - 1; dP_Ergun_Pa: the prediction of the drag law (Ergun for gidaspow);\n# series/parallelBound ="
-                " cell-average / harmonic cell-average of Ergun(eps_cell) over Ergun(eps_cells) - 1\n")
+                " cell-average / harmonic cell-average of Ergun(eps_cell) over Ergun(eps_cells) - 1;\n"
+                "# dP_ErgunLaw_Pa: Ergun's equation itself at eps and L, whatever the drag law;"
+                " errorVsErgun = dP/dP_ErgunLaw - 1 (a validation for every law)\n")
         f.write("# " + " ".join("%-14s" % c for c in cols) + "\n")
         for row in rows:
             f.write("  " + " ".join("%-14.6g" % x for x in (
                 row["U"], row["dP"], row["dP_e"], row["err"], eps, L, float(row["t"]),
                 row["change"], row["dP_bed"], row["dP_bed_e"], row["err_bed"],
-                row["cells"], row["series"], row["parallel"])) + "\n")
+                row["cells"], row["series"], row["parallel"], row["dP_ergun"],
+                row["err_ergun"])) + "\n")
     for k, v in head:
         print("%-18s %s" % (k, v))
     print("%8s %10s %10s %10s %10s %10s" % ("U", "dP", "predicted", "error", "dPbed", "errorBed"))

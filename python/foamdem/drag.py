@@ -66,13 +66,15 @@ def beetstra(d, rho, mu, eps, slip):
 
 
 def tenneti(d, rho, mu, eps, slip):
-    """Tenneti, Garg & Subramaniam (2011): K = 3 pi mu d eps F."""
+    """Tenneti, Garg & Subramaniam (2011): F is the total force (mean
+    pressure gradient included), the model-A drag (1 - phi) F:
+    K = 3 pi mu d eps^2 F."""
     phi = 1 - eps
     re = _re(d, rho, mu, eps, slip)
     f = ((1 + 0.15 * re ** 0.687) / eps ** 3 + 5.81 * phi / eps ** 3
          + 0.48 * phi ** (1 / 3) / eps ** 4
          + phi ** 3 * re * (0.95 + 0.61 * phi ** 3 / eps ** 2))
-    return 3 * math.pi * mu * d * eps * f
+    return 3 * math.pi * mu * d * eps ** 2 * f
 
 
 def rong(d, rho, mu, eps, slip):

@@ -84,6 +84,18 @@ TEST(SaffmanMei, ForceHandComputed)
           1.7951885539407833e-07}, tol));
 }
 
+TEST(SaffmanMei, SaffmanWithoutCorrection)
+{
+    // meiCorrection false: Saffman's radius form F = 6.46 mu a^2 U_n
+    // sqrt(kappa/nu), a = 0.5 mm in water, w = (0.02, 0.01, 0), kappa = 50
+    // (Re_p = 22.4, Re_s = 50, where Mei's factor is 0.42: the corrected
+    // force of ForceHandComputed is 0.42 of this one)
+    EXPECT_TRUE(vecNear(
+        saffmanMeiLift(1e-3, rhoW, muW, {0.02, 0.01, 0.0}, {0.0, 0.0, -50.0}, false),
+        {-1.1419774516162744e-07, 2.2839549032325488e-07, 0.0}, tol));
+    EXPECT_TRUE(isZero(saffmanMeiLift(1e-3, rhoW, muW, {0.0, 0.0, 0.0}, {0.0, 0.0, -50.0}, false)));
+}
+
 TEST(SaffmanMei, SaffmanLimitAndDirection)
 {
     // Re_p -> 0 at fixed shear: f -> 1, F -> 1.615 d^2 sqrt(rho mu G) |w|

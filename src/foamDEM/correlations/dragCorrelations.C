@@ -223,7 +223,10 @@ double tennetiForceCoeff
       + 0.48*std::cbrt(phi)/(e3*e)
       + phi3*Re*(0.95 + 0.61*phi3/(e*e));
 
-    return 3.0*pi*mu*d*e*F;
+    // F is the total force of the particle-resolved simulations, mean
+    // pressure gradient included; the drag without it (model A, as every
+    // law here) is (1 - phi) of it
+    return 3.0*pi*mu*d*e*e*F;
 }
 
 

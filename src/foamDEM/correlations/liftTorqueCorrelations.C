@@ -107,7 +107,8 @@ vec3 saffmanMeiLift
     double rho,
     double mu,
     const vec3& slip,
-    const vec3& omegaF
+    const vec3& omegaF,
+    bool meiCorrection
 )
 {
     const double w = mag(slip);
@@ -118,7 +119,7 @@ vec3 saffmanMeiLift
     }
     const double ReP = rho*w*d/mu;
     const double ReS = rho*om*d*d/mu;
-    const double f = meiLiftCorrection(ReP, ReS);
+    const double f = meiCorrection ? meiLiftCorrection(ReP, ReS) : 1.0;
     const double C = 1.615*d*d*std::sqrt(rho*mu/om)*f;
     return scaled(cross(slip, omegaF), C);
 }

@@ -23,6 +23,29 @@ namespace
 }
 
 
+Foam::foamDEM::saffmanMeiLift::saffmanMeiLift
+(
+    const dictionary& dict,
+    const demCoupling& coupling
+)
+:
+    forceModel(coupling),
+    mei_(true)
+{
+    const word correction = dict.getOrDefault<word>("correction", "mei");
+    if (correction != "mei" && correction != "none")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown correction '" << correction << "' for saffmanMeiLift"
+            << " (keyword correction of " << dict.name() << ");"
+            << " valid: mei (Mei 1992, the default), none (Saffman 1965)"
+            << exit(FatalIOError);
+    }
+    mei_ = (correction == "mei");
+    Info<< "saffmanMeiLift: correction " << correction << endl;
+}
+
+
 void Foam::foamDEM::saffmanMeiLift::addRequirements(exchangePlan& plan) const
 {
     plan.need(quantity::velocity, typeName);
@@ -50,7 +73,8 @@ void Foam::foamDEM::saffmanMeiLift::addForce(particleData& p) const
                 rho,
                 mu,
                 toVec3(p.fluidVelocity[i] - p.velocity[i]),
-                toVec3(vorticity[c])
+                toVec3(vorticity[c]),
+                mei_
             );
         p.coupledForce[i] += vector(F.x, F.y, F.z);
     }

@@ -3,8 +3,8 @@
 run time) of the like-for-like set-up.
 
     ./sensitivity.py [--variants a,b] [--np 2] [--end 2] [--window 1.5 2.0]
-                     [--work DIR] [--reuse name=DIR ...] [--continue]
-                     [--table-only]
+                     [--base NAME] [--work DIR] [--reuse name=DIR ...]
+                     [--continue] [--table-only]
 
 Each variant is a copy of this tutorial (in WORK/<name>, default
 results/sensitivity/runs) with one change from the like-for-like set-up,
@@ -15,6 +15,14 @@ WORK/<name>/results/summary_T0-T1.dat exists) is measured again only; with
 --reuse name=DIR takes the run in DIR for that variant instead (the full
 run for "likeForLike", for example: its window is the same if the run
 passed T1).
+
+--base NAME applies variant NAME's change first to every variant, so that
+each variant differs from that base in one parameter only (the base itself
+is the row "likeForLike" then, and every row is named "<variant>+<base>").
+With --base demStep10 every run costs about half of the like-for-like one;
+the demStep10 row against the like-for-like one says what the base changes.
+Such runs go to WORK/<variant>+<base> and the tables to
+OUT/sensitivity+<base>.dat/.md.
 
 The variants (no parameter is moved away from the reference's values to
 improve agreement; each one is a set-up choice the reference leaves open,
@@ -31,6 +39,8 @@ or one that foamDEM makes differently):
                 core + 4 radial cells, 5 mm along x: 8 x the cells)
   seed2         the packing of a second insertion seed (the same shape,
                 particle count and fill method)
+  saffman       Saffman's lift without Mei's correction (the reference's
+                lift; the tutorial uses Saffman-Mei)
 
 Writes results/sensitivity/sensitivity.dat (one line per variant and
 quantity: variant, quantity, foamDEM with the reference's measures, with
@@ -103,6 +113,11 @@ def v_seed2(case):
     sed(os.path.join(case, "DEM/in.pack"), r"(insert/pack seed )49979687", r"\g<1>32452843")
 
 
+def v_saffman(case):
+    with open(os.path.join(case, "constant/couplingProperties"), "a") as f:
+        f.write("\nsaffmanMeiLiftCoeffs { correction none; }\n")
+
+
 VARIANTS = [
     ("likeForLike", "the tutorial: wall friction 0.343 (harmonic mean)", None),
     ("friction04", "particle-wall friction 0.4 (the wall's own value)", v_friction04),
@@ -110,7 +125,17 @@ VARIANTS = [
     ("divided", "void fraction divided, no smoothing", v_divided),
     ("refined", "CFD mesh refined once (8 x the cells)", v_refined),
     ("seed2", "second packing seed", v_seed2),
+    ("saffman", "Saffman lift without Mei's correction (the reference's)", v_saffman),
 ]
+
+
+def on_base(base_edit, edit):
+    """The variant's edit after the base's."""
+    def both(case):
+        base_edit(case)
+        if edit:
+            edit(case)
+    return both
 
 
 def read_summary(path):
@@ -127,27 +152,29 @@ def read_summary(path):
 
 
 def wall_time(case, t1):
-    """Measured wall time of packing + coupled run up to t1: the LIGGGHTS
-    loop times of the packing log and, per solver log segment, the
-    ClockTime at the last step <= t1."""
+    """Measured cost of packing + coupled run up to t1: the LIGGGHTS loop
+    times of the packing log and, per solver log segment, the ClockTime
+    (wall) and ExecutionTime (CPU time of rank 0, which a machine shared
+    with other work inflates less than the wall time) at the last step
+    <= t1."""
     pack = 0.0
     log = os.path.join(case, "DEM/log.pack")
     if os.path.exists(log):
         with open(log) as f:
             pack = sum(float(m.group(1)) for m in re.finditer(r"^Loop time of (\S+)", f.read(), re.M))
-    coupled = 0.0
+    coupled, cpu = 0.0, 0.0
     for log in sorted(glob.glob(os.path.join(case, "log.pisoDEMFoam*"))):
-        t, last, first = None, None, None
+        t, last = None, None
         with open(log) as f:
             for line in f:
                 if line.startswith("Time = "):
                     t = float(line.split()[2])
                 elif "ClockTime" in line and t is not None and t <= t1 + 1e-9:
-                    last = float(line.split()[-2])
-                    first = last if first is None else first
+                    last = line.split()
         if last is not None:
-            coupled += last
-    return pack, coupled
+            coupled += float(last[-2])
+            cpu += float(last[2])
+    return pack, coupled, cpu
 
 
 def run_variant(name, edit, work, args):
@@ -192,12 +219,17 @@ def main():
     ap.add_argument("--work", default=os.path.join(HERE, "results", "sensitivity", "runs"))
     ap.add_argument("--out", default=os.path.join(HERE, "results", "sensitivity"))
     ap.add_argument("--reuse", action="append", default=[], metavar="NAME=DIR")
+    ap.add_argument("--base", help="apply this variant's change to every run (see above)")
     ap.add_argument("--continue", dest="cont", action="store_true")
     ap.add_argument("--table-only", action="store_true", help="run nothing, tabulate what exists")
     args = ap.parse_args()
 
     reuse = dict(r.split("=", 1) for r in args.reuse)
     names = [v[0] for v in VARIANTS]
+    if args.base is not None and args.base not in names[1:]:
+        sys.exit("sensitivity.py: unknown base '%s'; valid: %s" % (args.base, ", ".join(names[1:])))
+    base_edit = dict((n, e) for n, _, e in VARIANTS).get(args.base)
+    suffix = "+" + args.base if args.base else ""
     wanted = args.variants.split(",") if args.variants else names
     for w in wanted:
         if w not in names:
@@ -206,8 +238,13 @@ def main():
 
     rows = []
     for name, what, edit in VARIANTS:
-        if name not in wanted:
+        if name not in wanted or (args.base and name == args.base):
             continue
+        if base_edit:
+            edit = on_base(base_edit, edit)
+            what = what + (" (on the %s base)" % args.base if name != "likeForLike"
+                           else " with the %s change only (the base)" % args.base)
+        name = name + suffix
         if name in reuse:
             case = os.path.abspath(reuse[name])
             if not os.path.exists(os.path.join(case, "results", "summary_%g-%g.dat" % tuple(args.window))):
@@ -221,35 +258,50 @@ def main():
             print("variant %s: no %s" % (name, summary))
             continue
         s = read_summary(summary)
-        pack, coupled = wall_time(case, args.window[1])
-        rows.append((name, what, s, pack, coupled))
+        pack, coupled, cpu = wall_time(case, args.window[1])
+        rows.append((name, what, s, pack, coupled, cpu))
 
-    dat = os.path.join(args.out, "sensitivity.dat")
-    md = os.path.join(args.out, "sensitivity.md")
+    dat = os.path.join(args.out, "sensitivity%s.dat" % suffix)
+    md = os.path.join(args.out, "sensitivity%s.md" % suffix)
     w0, w1 = args.window
     with open(dat, "w") as f, open(md, "w") as g:
         f.write("# densePneumaticConveying sensitivity, window %g..%g s, np %d; SI units\n" % (w0, w1, args.np))
         f.write("# foamDEM_ref: the reference's measures (solidsMassFlowRate over the window);"
                 " foamDEM_own: foamDEM's own; diff_pct: foamDEM_ref against the reference\n")
-        f.write("# wall_s: measured wall time of packing + coupled run to %g s\n" % w1)
-        f.write("# variant quantity reference foamDEM_ref foamDEM_own diff_pct wall_s\n")
+        f.write("# wall_s: measured wall time of packing + coupled run to %g s;"
+                " cpu_s: packing wall + the coupled run's CPU time on rank 0\n" % w1)
+        f.write("# variant quantity reference foamDEM_ref foamDEM_own diff_pct wall_s cpu_s\n")
         g.write("Window %g–%g s, np %d; reference's measures (foamDEM's own in brackets);"
                 " difference from the reference in %%.\n\n" % (w0, w1, args.np))
         g.write("| variant | change | " + " | ".join(q for q, _, _ in REFERENCE)
-                + " | wall (packing + coupled to %g s) |\n" % w1)
-        g.write("|---|---|" + "---|" * len(REFERENCE) + "---|\n")
-        g.write("| reference | | " + " | ".join("%g %s" % (v, u) for _, u, v in REFERENCE) + " | |\n")
-        for name, what, s, pack, coupled in rows:
+                + " | wall (packing + coupled to %g s) | coupled CPU, rank 0 |\n" % w1)
+        g.write("|---|---|" + "---|" * len(REFERENCE) + "---|---|\n")
+        g.write("| reference | | " + " | ".join("%g %s" % (v, u) for _, u, v in REFERENCE) + " | | |\n")
+        for name, what, s, pack, coupled, cpu in rows:
             cells = []
             for q, unit, ref in REFERENCE:
                 rq = "ref_solidsMassFlowRateWindow" if q == "solidsMassFlowRate" else "ref_" + q
                 vr, vo = s.get(rq, float("nan")), s.get(q, float("nan"))
                 d = 100.0 * (vr - ref) / ref
-                f.write("%-12s %-24s %8.4g %10.4g %10.4g %+7.1f %8.0f\n"
-                        % (name, q, ref, vr, vo, d, pack + coupled))
+                f.write("%-12s %-24s %8.4g %10.4g %10.4g %+7.1f %8.0f %8.0f\n"
+                        % (name, q, ref, vr, vo, d, pack + coupled, pack + cpu))
                 cells.append("%.3g (%.3g), %+.1f %%" % (vr, vo, d))
-            g.write("| %s | %s | %s | %.0f + %.0f s |\n"
-                    % (name, what, " | ".join(cells), pack, coupled))
+            g.write("| %s | %s | %s | %.0f + %.0f s | %.0f s |\n"
+                    % (name, what, " | ".join(cells), pack, coupled, cpu))
+        if rows:
+            # each variant against the first row (the like-for-like set-up or the base)
+            first = rows[0][2]
+            g.write("\nChange from %s (the reference's measures; the mass flow by the own"
+                    " measure Σ m v_x / L, which a 0.5 s window resolves):\n\n" % rows[0][0])
+            g.write("| variant | " + " | ".join(q for q, _, _ in REFERENCE) + " |\n")
+            g.write("|---|" + "---|" * len(REFERENCE) + "\n")
+            for name, _, s, _, _, _ in rows[1:]:
+                cells = []
+                for q, _, _ in REFERENCE:
+                    k = q if q == "solidsMassFlowRate" else "ref_" + q
+                    a, b = s.get(k, float("nan")), first.get(k, float("nan"))
+                    cells.append("%+.1f %%" % (100.0 * (a - b) / b))
+                g.write("| %s | %s |\n" % (name, " | ".join(cells)))
     print("Table: %s\n       %s" % (dat, md))
     with open(md) as g:
         print(g.read())

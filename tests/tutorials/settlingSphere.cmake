@@ -181,3 +181,13 @@ set_tests_properties(continuation.settlingSphere.np1 PROPERTIES
     LABELS "integration;tutorial" TIMEOUT 300)
 set_tests_properties(continuation.settlingSphere.np2 PROPERTIES
     LABELS "integration;tutorial;parallel" TIMEOUT 300 PROCESSORS 2)
+
+# Undisturbed fluid velocity (issue 12 item 4): the sphere in cells as wide
+# as itself (d/h = 1, 20 x 20 x 80 mm box) with undisturbedVelocity
+# selfInducedCorrection settles within 1 % of the ODE's terminal velocity
+# (meshConvergence.py; doc/validation/settlingSphere/meshConvergence.dat)
+add_test(NAME settlingSphere.undisturbedVelocity.dOverH1
+    COMMAND ${TUT} settlingSphere ${FOAMDEM_WORK}/settlingSphere_undisturbed
+            -meshConvergence -ci)
+set_tests_properties(settlingSphere.undisturbedVelocity.dOverH1 PROPERTIES
+    LABELS "integration;tutorial;validation" TIMEOUT 600)

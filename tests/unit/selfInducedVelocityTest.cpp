@@ -93,3 +93,21 @@ TEST(UndisturbedSlipFactor, Values)
     EXPECT_REL(undisturbedSlipFactor(1e4, 1e-3), 2.0, 1e-14);
     EXPECT_REL(undisturbedSlipFactor(1e4, 1e-3, 0.8), 5.0, 1e-12);
 }
+
+TEST(KernelCentreValue, ClosedForms)
+{
+    // Gaussian exp(-k^2 a^2): a normal density of variance 2 a^2 per
+    // direction, (4 pi a^2)^(-3/2) = 1/(8 pi^(3/2) a^3) at its centre
+    const double a = 1e-3;
+    EXPECT_REL(kernelCentreValue(a, 0), 1/(8*std::pow(kPi, 1.5)*a*a*a), 1e-8);
+    // filter alone: 1/(2 pi^2) int k^2/(1 + k^2 L^2)^2 dk = 1/(8 pi L^3)
+    const double L = 2e-3;
+    EXPECT_REL(kernelCentreValue(0, L), 1/(8*kPi*L*L*L), 1e-14);
+    // (a 1e-4 L Gaussian stretches the quadrature over 21 decades)
+    EXPECT_REL(kernelCentreValue(1e-7, L), 1/(8*kPi*L*L*L), 1e-3);
+    // a cell's top-hat (a^2 = h^2/12): 0.933/h^3, the cube's exact 1/h^3
+    // within 7 %
+    const double h = 1e-3;
+    EXPECT_NEAR(kernelCentreValue(h/std::sqrt(12.0), 0)*h*h*h, 0.933, 1e-3);
+    EXPECT_TRUE(std::isinf(kernelCentreValue(0, 0)));
+}

@@ -45,7 +45,7 @@ def foam_set(cwd, dict_path, entry, value):
                  % (dict_path, entry, r.stderr))
 
 
-def prepare(case, work, d_over_h, correct, extra):
+def prepare(case, work, d_over_h, correct, extra, box, end_time):
     if os.path.exists(work):
         shutil.rmtree(work)
     shutil.copytree(case, work, ignore=shutil.ignore_patterns(
@@ -53,8 +53,8 @@ def prepare(case, work, d_over_h, correct, extra):
     subprocess.run(["./Allclean"], cwd=work, stdout=subprocess.DEVNULL,
                    stderr=subprocess.DEVNULL)
     h = D_MM / d_over_h
-    n = [int(round((b[1] - b[0]) / h)) for b in BOX_MM]
-    (x0, x1), (y0, y1), (z0, z1) = BOX_MM
+    n = [int(round((b[1] - b[0]) / h)) for b in box]
+    (x0, x1), (y0, y1), (z0, z1) = box
     verts = ("((%g %g %g) (%g %g %g) (%g %g %g) (%g %g %g) (%g %g %g) (%g %g %g) (%g %g %g) (%g %g %g))"
              % (x0, y0, z0, x1, y0, z0, x1, y1, z0, x0, y1, z0,
                 x0, y0, z1, x1, y0, z1, x1, y1, z1, x0, y1, z1))
@@ -65,12 +65,23 @@ def prepare(case, work, d_over_h, correct, extra):
              "selfInducedCorrection" if correct else "none")
     for entry, value in extra:
         foam_set(work, "constant/couplingProperties", entry, value)
+    if end_time != 0.25:
+        # Allrun -ci sets endTime 0.25 and writeInterval 0.05
+        allrun = os.path.join(work, "Allrun")
+        text = open(allrun).read()
+        old = "-entry endTime -set 0.25"
+        if text.count(old) != 1:
+            sys.exit("meshConvergence.py: Allrun -ci no longer sets endTime 0.25")
+        text = text.replace(old, "-entry endTime -set %g" % end_time)
+        text = text.replace("-entry writeInterval -set 0.05",
+                            "-entry writeInterval -set %g" % end_time)
+        open(allrun, "w").write(text)
     return n
 
 
-def run_one(case, root, d_over_h, correct, extra):
+def run_one(case, root, d_over_h, correct, extra, box, end_time):
     work = os.path.join(root, "%g_%s" % (d_over_h, "with" if correct else "without"))
-    cells = prepare(case, work, d_over_h, correct, extra)
+    cells = prepare(case, work, d_over_h, correct, extra, box, end_time)
     t0 = time.time()
     with open(os.path.join(work, "log.Allrun"), "w") as f:
         rc = subprocess.run(["./Allrun", "-ci"], cwd=work, stdout=f,
@@ -92,13 +103,25 @@ def main():
     ap.add_argument("--without-only", action="store_true", help="only the uncorrected runs")
     ap.add_argument("--set", nargs=2, action="append", default=[], metavar=("ENTRY", "VALUE"),
                     help="also set a couplingProperties entry in every run")
+    ap.add_argument("--set-with", nargs=2, action="append", default=[],
+                    metavar=("ENTRY", "VALUE"),
+                    help="also set a couplingProperties entry in the corrected runs only")
+    ap.add_argument("--work", default="results/meshConvergence",
+                    help="directory of the runs (default results/meshConvergence)")
     ap.add_argument("--max-error", type=float, default=None,
                     help="fail if a corrected run's error exceeds this [%%]")
+    ap.add_argument("--box", type=float, nargs=6, default=None,
+                    metavar=("X0", "X1", "Y0", "Y1", "Z0", "Z1"),
+                    help="the mesh's box [mm] (default 10 30 10 30 80 160)")
+    ap.add_argument("--end-time", type=float, default=0.25,
+                    help="run length [s] (default 0.25, the CI length)")
     ap.add_argument("--out", default="results/meshConvergence.dat")
     args = ap.parse_args()
+    box = BOX_MM if args.box is None else tuple(
+        (args.box[2 * i], args.box[2 * i + 1]) for i in range(3))
 
     case = os.path.dirname(os.path.abspath(__file__))
-    root = os.path.join(case, "results/meshConvergence")
+    root = os.path.abspath(args.work)
     os.makedirs(root, exist_ok=True)
 
     rows = []
@@ -109,7 +132,8 @@ def main():
             if (correct and args.without_only) or (not correct and args.with_only):
                 res[correct] = (None, None, None)
                 continue
-            err, wall, cells = run_one(case, root, r, correct, args.set)
+            extra = args.set + (args.set_with if correct else [])
+            err, wall, cells = run_one(case, root, r, correct, extra, box, args.end_time)
             res[correct] = (err, wall, cells)
             print("d/h = %g, %s correction: error %s, wall %.1f s, cells %s"
                   % (r, "with" if correct else "without",
@@ -129,16 +153,22 @@ def main():
     os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
     with open(args.out, "w") as f:
         f.write("# settlingSphere mesh convergence (tutorials/settlingSphere/meshConvergence.py)\n")
-        f.write("# error: |v_DEM - v_t|/v_t [%] at t = 0.25 s, v_t the terminal velocity of the ODE\n")
+        f.write("# error: |v_DEM - v_t|/v_t [%%] at t = %g s, v_t the terminal velocity of the ODE\n"
+                % args.end_time)
         f.write("#   m dv/dt = (rho_p - rho) V g - K(v) v with the same drag law (schillerNaumann,\n")
         f.write("#   Re_t = 146; validate.py's terminalError)\n")
         f.write("# run: d = 1 mm glass sphere in water, model A, implicit coupling, centre void\n")
-        f.write("#   fraction, CFD step 1e-3 s, DEM step 1e-5 s; box 20 x 20 x 80 mm of cubic cells\n")
+        f.write("#   fraction, CFD step 1e-3 s, DEM step 1e-5 s; box x %g-%g, y %g-%g, z %g-%g mm\n"
+                % tuple(v for b in box for v in b))
+        f.write("#   of cubic cells h = d/(d/h), the sphere released at (20, 20, 140) mm\n")
         f.write("#   h = d/(d/h); ./Allrun -ci per run, serial, at nice 19 on a shared 2-core machine\n")
         f.write("# errorWithout: undisturbedVelocity none; errorWith: selfInducedCorrection\n")
         if args.set:
-            f.write("# also set in couplingProperties: %s\n"
+            f.write("# also set in couplingProperties (both): %s\n"
                     % ", ".join("%s %s" % (e, v) for e, v in args.set))
+        if args.set_with:
+            f.write("# also set in couplingProperties (errorWith runs only): %s\n"
+                    % ", ".join("%s %s" % (e, v) for e, v in args.set_with))
         f.write("# wall_s: wall time of ./Allrun -ci (blockMesh, pisoDEMFoam, validate.py)\n")
         f.write("%-8s %-13s %-13s %-14s %-14s\n"
                 % ("dOverH", "errorWithout", "errorWith", "wallWithout_s", "wallWith_s"))

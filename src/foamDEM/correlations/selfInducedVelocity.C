@@ -80,6 +80,38 @@ double foamDEM::correlations::selfInducedMobility
 }
 
 
+double foamDEM::correlations::kernelCentreValue(double a, double L)
+{
+    a = std::max(a, 0.0);
+    L = std::max(L, 0.0);
+    if (a <= 0 && L <= 0)
+    {
+        return std::numeric_limits<double>::infinity();
+    }
+    if (a <= 0)
+    {
+        return 1/(8*kPi*L*L*L);
+    }
+    // Composite Simpson in t = ln k, as selfInducedMobility
+    const double ell = std::max(a, L);
+    const double kLo = 1e-7/ell;
+    const double kHi = 6.5/a;
+    const int n = 400;
+    const double t0 = std::log(kLo);
+    const double dt = (std::log(kHi) - t0)/n;
+    double sum = 0;
+    for (int i = 0; i <= n; ++i)
+    {
+        const double k = std::exp(t0 + i*dt);
+        const double kL2 = k*k*L*L;
+        const double G = std::exp(-k*k*a*a)/((1 + kL2)*(1 + kL2));
+        const double w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+        sum += w*k*k*G*k;
+    }
+    return sum*dt/3/(2*kPi*kPi);
+}
+
+
 double foamDEM::correlations::undisturbedSlipFactor
 (
     double m, double K, double maxMK

@@ -601,14 +601,23 @@ Foam::foamDEM::demCoupling::demCoupling
     }
     momentum_ = momentumCouplingModel::New(dict_);
     pressureScheme_ = pressureScheme::New(mesh_, dict_);
-    undisturbed_.reset
-    (
-        new undisturbedVelocity
-        (
-            dict_, mesh_, voidFraction_(), rhoFluid_, nuFluid_
-        )
-    );
     checkForceModels();
+    {
+        bool pressureGradientForce = false;
+        for (const forceModel& f : forces_)
+        {
+            pressureGradientForce =
+                pressureGradientForce || f.type() == "pressureGradient";
+        }
+        undisturbed_.reset
+        (
+            new undisturbedVelocity
+            (
+                dict_, mesh_, voidFraction_(), rhoFluid_, nuFluid_,
+                modelType_ == modelTypes::A && pressureGradientForce
+            )
+        );
+    }
     if (Pstream::parRun())
     {
         transfer_.reset(new particleTransfer(mesh_));

@@ -1,5 +1,6 @@
 #include "undisturbedVelocity.H"
 #include "selfInducedVelocity.H"
+#include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -70,7 +71,8 @@ Foam::foamDEM::undisturbedVelocity::undisturbedVelocity
     const fvMesh& mesh,
     const voidFractionModel& voidFraction,
     const scalar rho,
-    const scalar nu
+    const scalar nu,
+    const bool correctPressureGradient
 )
 :
     mesh_(mesh),
@@ -88,6 +90,7 @@ Foam::foamDEM::undisturbedVelocity::undisturbedVelocity
             couplingDict, "undisturbedVelocity", methodNames, methods::none
         )
     ),
+    correctPressureGradient_(correctPressureGradient),
     maxRelativeCorrection_(0)
 {
     Info<< "    coupling kernel " << kernelNames[kernel_]
@@ -95,7 +98,9 @@ Foam::foamDEM::undisturbedVelocity::undisturbedVelocity
           && voidFraction_.subCellVariance(1) == 0
           ? " (the void fraction model puts a particle in one cell: the"
             " same as cell)" : "")
-        << ", undisturbed velocity " << methodNames[method_] << endl;
+        << ", undisturbed velocity " << methodNames[method_]
+        << (corrects() && correctPressureGradient_
+          ? " (and the pressure-gradient force)" : "") << endl;
 }
 
 
@@ -190,6 +195,33 @@ void Foam::foamDEM::undisturbedVelocity::evaluate
             p.fluidVelocity[i] = p.velocity[i] + factor*slipSeen;
         }
         evaluateForces(p, forces);
+    }
+
+    if (correctPressureGradient_)
+    {
+        // The particle's own pressure gradient out of its pressure-gradient
+        // force: -V_p rho grad p_self = V_p (g*g)(0)/3 F_p was added by the
+        // pressureGradient model; the coupled force takes it off (and its
+        // reaction off the fluid)
+        forAll(p.cell, i)
+        {
+            const label c = p.cell[i];
+            if (c < 0)
+            {
+                continue;
+            }
+            const scalar h = cbrt(V[c]);
+            scalar a2 = sqr(h)/12;
+            if (spreads())
+            {
+                a2 += voidFraction_.subCellVariance(2*p.radius[i]);
+            }
+            const scalar g0 =
+                ::foamDEM::correlations::kernelCentreValue(Foam::sqrt(a2), L);
+            const scalar Vp = constant::mathematical::pi/6*pow3(2*p.radius[i]);
+            p.coupledForce[i] -= Vp*g0/3
+               *p.dragCoeff[i]*(p.fluidVelocity[i] - p.velocity[i]);
+        }
     }
 
     maxRelativeCorrection_ = 0;

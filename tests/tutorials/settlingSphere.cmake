@@ -182,12 +182,18 @@ set_tests_properties(continuation.settlingSphere.np1 PROPERTIES
 set_tests_properties(continuation.settlingSphere.np2 PROPERTIES
     LABELS "integration;tutorial;parallel" TIMEOUT 300 PROCESSORS 2)
 
-# Undisturbed fluid velocity (issue 12 item 4): the sphere in cells as wide
-# as itself (d/h = 1, 20 x 20 x 80 mm box) with undisturbedVelocity
-# selfInducedCorrection settles within 1 % of the ODE's terminal velocity
-# (meshConvergence.py; doc/validation/settlingSphere/meshConvergence.dat)
-add_test(NAME settlingSphere.undisturbedVelocity.dOverH1
+# Undisturbed fluid velocity (issue 12 item 4; ./Allrun -meshConvergence
+# -ci, meshConvergence.py), each within 1 % of the ODE's terminal velocity:
+#  1. d/h = 0.5 (20 x 20 x 80 mm box, 0.25 s), the tutorial's centre void
+#     fraction and cell kernel with undisturbedVelocity
+#     selfInducedCorrection (measured -0.63 %; without it +3.13 %);
+#  2. d/h = 1 (12 x 12 x 60 mm box, 0.15 s), voidFraction smoothed (divided,
+#     L = 2 d), couplingKernel voidFraction and the correction (measured
+#     0.50 %; the tutorial as it is: 9.06 %).
+# Seen failing with the correction switched off in the code: see
+# doc/validation.md (settlingSphere as the cells shrink)
+add_test(NAME settlingSphere.undisturbedVelocity
     COMMAND ${TUT} settlingSphere ${FOAMDEM_WORK}/settlingSphere_undisturbed
             -meshConvergence -ci)
-set_tests_properties(settlingSphere.undisturbedVelocity.dOverH1 PROPERTIES
+set_tests_properties(settlingSphere.undisturbedVelocity PROPERTIES
     LABELS "integration;tutorial;validation" TIMEOUT 600)

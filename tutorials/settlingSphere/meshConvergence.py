@@ -1,24 +1,30 @@
 #!/usr/bin/python3
 """settlingSphere as the cells shrink: the terminal-velocity error against
 the ODE of the same drag law (validate.py) at several particle-to-cell size
-ratios d/h, without and with the self-induced velocity correction
-(couplingProperties: undisturbedVelocity selfInducedCorrection; see
+ratios d/h, without and with the undisturbed-velocity treatment (see
 doc/models.md, "Undisturbed fluid velocity").
 
 The sphere is the tutorial's (d = 1 mm glass in water, schillerNaumann,
-Re_t = 146, model A, implicit coupling, `centre` void fraction, CFD step
-1e-3 s, DEM step 1e-5 s, the CI length 0.25 s). The mesh is a box of
-20 x 20 x 80 mm (x, y in [10, 30] mm, z in [80, 160] mm; the sphere starts
-at (20, 20, 140) mm, as in the tutorial, and falls about 33 mm) with cubic
-cells of h = d/(d/h), so that d/h = 1 stays small enough (32 000 cells).
+Re_t = 146, model A, implicit coupling, CFD step 1e-3 s, DEM step 1e-5 s,
+the CI length 0.25 s). The mesh is a box of 20 x 20 x 80 mm (x, y in
+[10, 30] mm, z in [80, 160] mm; the sphere starts at (20, 20, 140) mm, as in
+the tutorial, and falls about 33 mm) with cubic cells of h = d/(d/h), so
+that d/h = 1 stays small (32 000 cells).
+
+- without: the tutorial as it is (`centre` void fraction, couplingKernel
+  cell, undisturbedVelocity none);
+- with (--kernel smoothed, the default): voidFraction smoothed (base
+  divided, smoothingLengthInDiameters 2), couplingKernel voidFraction,
+  undisturbedVelocity selfInducedCorrection;
+- with --kernel cell: the tutorial plus undisturbedVelocity
+  selfInducedCorrection only.
 
     ./meshConvergence.py                       d/h = 0.1 0.25 0.5 1, table
-    ./meshConvergence.py --d-over-h 1 --with-only --max-error 1
-                                               the CI check (CTest)
     ./meshConvergence.py --out ../../doc/validation/settlingSphere/meshConvergence.dat
+    ./Allrun -meshConvergence -ci              the CI check (CTest)
 
-Each run is a copy of the case in results/meshConvergence/<dOverH>_<with|without>
-(./Allrun -ci). The error is |v_DEM(0.25 s) - v_t|/v_t, v_t the terminal
+Each run is a copy of the case in <work>/<dOverH>_<with|without>
+(./Allrun -ci). The error is |v_DEM(end) - v_t|/v_t, v_t the terminal
 velocity of the ODE (validate.py's terminalError); the wall time is that of
 ./Allrun -ci (blockMesh, pisoDEMFoam, validate.py). Exits 1 if a run fails
 or a corrected run's error exceeds --max-error [%].
@@ -34,6 +40,10 @@ sys.path.insert(0, os.path.join(os.environ.get("FOAMDEM_DIR", "../.."), "python"
 from foamdem import caseio  # noqa: E402
 
 D_MM = 1.0
+# The corrected runs' settings with --kernel smoothed
+SMOOTHED = [["voidFraction", "smoothed"],
+            ["smoothedCoeffs", "{ base divided; smoothingLengthInDiameters 2; }"],
+            ["couplingKernel", "voidFraction"]]
 BOX_MM = ((10.0, 30.0), (10.0, 30.0), (80.0, 160.0))
 
 
@@ -106,6 +116,10 @@ def main():
     ap.add_argument("--set-with", nargs=2, action="append", default=[],
                     metavar=("ENTRY", "VALUE"),
                     help="also set a couplingProperties entry in the corrected runs only")
+    ap.add_argument("--kernel", choices=("smoothed", "cell"), default="smoothed",
+                    help="the corrected runs' kernel: smoothed (voidFraction smoothed, base"
+                    " divided, L = 2 d, couplingKernel voidFraction; the default) or cell"
+                    " (the tutorial's centre void fraction and cell kernel)")
     ap.add_argument("--work", default="results/meshConvergence",
                     help="directory of the runs (default results/meshConvergence)")
     ap.add_argument("--max-error", type=float, default=None,
@@ -117,6 +131,8 @@ def main():
                     help="run length [s] (default 0.25, the CI length)")
     ap.add_argument("--out", default="results/meshConvergence.dat")
     args = ap.parse_args()
+    if args.kernel == "smoothed":
+        args.set_with = SMOOTHED + args.set_with
     box = BOX_MM if args.box is None else tuple(
         (args.box[2 * i], args.box[2 * i + 1]) for i in range(3))
 
@@ -157,12 +173,13 @@ def main():
                 % args.end_time)
         f.write("#   m dv/dt = (rho_p - rho) V g - K(v) v with the same drag law (schillerNaumann,\n")
         f.write("#   Re_t = 146; validate.py's terminalError)\n")
-        f.write("# run: d = 1 mm glass sphere in water, model A, implicit coupling, centre void\n")
-        f.write("#   fraction, CFD step 1e-3 s, DEM step 1e-5 s; box x %g-%g, y %g-%g, z %g-%g mm\n"
+        f.write("# run: d = 1 mm glass sphere in water, model A, implicit coupling, CFD step\n")
+        f.write("#   1e-3 s, DEM step 1e-5 s; box x %g-%g, y %g-%g, z %g-%g mm\n"
                 % tuple(v for b in box for v in b))
         f.write("#   of cubic cells h = d/(d/h), the sphere released at (20, 20, 140) mm\n")
-        f.write("#   h = d/(d/h); ./Allrun -ci per run, serial, at nice 19 on a shared 2-core machine\n")
-        f.write("# errorWithout: undisturbedVelocity none; errorWith: selfInducedCorrection\n")
+        f.write("#   ./Allrun -ci per run, serial, at nice 19 on a shared 2-core machine\n")
+        f.write("# errorWithout: the tutorial's centre void fraction, couplingKernel cell,\n")
+        f.write("#   undisturbedVelocity none; errorWith: undisturbedVelocity selfInducedCorrection\n")
         if args.set:
             f.write("# also set in couplingProperties (both): %s\n"
                     % ", ".join("%s %s" % (e, v) for e, v in args.set))

@@ -131,6 +131,20 @@ add_test(NAME parallel.settlingSphere.np2
 set_tests_properties(parallel.settlingSphere.np2 PROPERTIES
     LABELS "integration;parallel" TIMEOUT 300 PROCESSORS 2)
 
+# Parallel with the self-induced velocity correction (centre, cell kernel,
+# undisturbedVelocity selfInducedCorrection), d/h = 0.25, the sphere on the
+# rank cut (x = 20 mm): np = 1 and np = 2 agree to 1e-8. (The smoothed
+# void fraction with a sphere at the cut differs between np 1 and np 2 by
+# 4e-3 in velocity already without the new options, so the smoothed kernel
+# is not compared here: see doc/validation.md)
+add_test(NAME parallel.settlingSphere.undisturbedVelocity
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/compareParallel
+            ${FOAMDEM_WORK}/parallel_settling_undisturbed 2 1e-8
+            "foamDictionary constant/couplingProperties -entry undisturbedVelocity -add selfInducedCorrection && foamDictionary system/blockMeshDict -entry blocks -set '(hex (0 1 2 3 4 5 6 7) (10 10 40) simpleGrading (1 1 1))'"
+            settlingSphere no)
+set_tests_properties(parallel.settlingSphere.undisturbedVelocity PROPERTIES
+    LABELS "integration;parallel" TIMEOUT 300 PROCESSORS 2)
+
 # Work-precision report: two cost levels, a table row and a plot each
 add_test(NAME workPrecision.settlingSphere
     COMMAND ${CMAKE_COMMAND} -E env

@@ -11,7 +11,9 @@ unknown name, and the solver's FatalIOError lists the valid ones
 (defineRunTimeSelectionTable in src/foamDEM); a family with no keyword here
 fails the test, so a new one cannot go unchecked. foamDEM's fvOption
 (flowController) sits in OpenFOAM's own fv::option table among OpenFOAM's
-options; it is found from its registration in the sources.
+options; it is found from its registration in the sources. The keywords
+that choose from a fixed list (CHOICES: couplingKernel, undisturbedVelocity)
+are asked the same way.
 
 What the document offers: in every '## ' section whose heading names a
 keyword in backquotes, '(`keyword`...)', the first column of each table
@@ -43,6 +45,13 @@ KEYWORDS = {
     "particleOutput": ("particleOutput", "(noSuchModel)"),
 }
 FV_OPTIONS = "fvOptions"
+
+# Keywords of couplingProperties that choose from a fixed list (an Enum, not
+# a selection table), with the value that is not a choice
+CHOICES = {
+    "couplingKernel": "noSuchKernel",
+    "undisturbedVelocity": "noSuchMethod",
+}
 
 
 def documented(path):
@@ -100,7 +109,7 @@ def valid_names(work, keyword, value):
     case = os.path.join(work, keyword)
     shutil.copytree(os.path.join(work, "base"), case)
     subprocess.run(["foamDictionary", "constant/couplingProperties", "-entry", keyword,
-                    "-set", value], cwd=case, check=True, stdout=subprocess.DEVNULL)
+                    "-set" if keyword not in CHOICES else "-add", value], cwd=case, check=True, stdout=subprocess.DEVNULL)
     with open(os.path.join(case, "log.pisoDEMFoam"), "w") as log:
         status = subprocess.run(["pisoDEMFoam"], cwd=case, stdout=log,
                                 stderr=subprocess.STDOUT, timeout=60).returncode
@@ -139,6 +148,8 @@ def main():
         keyword, value = KEYWORDS[b]
         selectable[keyword] = valid_names(work, keyword, value)
     selectable[FV_OPTIONS] = sorted(fv_options)
+    for keyword, value in CHOICES.items():
+        selectable[keyword] = valid_names(work, keyword, value)
 
     docs = documented(MODELS_MD)
     print("%-18s %-6s %s" % ("keyword", "count", "selectable (code) / documented (doc/models.md)"))

@@ -131,6 +131,20 @@ add_test(NAME parallel.settlingSphere.np2
 set_tests_properties(parallel.settlingSphere.np2 PROPERTIES
     LABELS "integration;parallel" TIMEOUT 300 PROCESSORS 2)
 
+# Parallel with the self-induced velocity correction (centre, cell kernel,
+# undisturbedVelocity selfInducedCorrection), d/h = 0.25, the sphere on the
+# rank cut (x = 20 mm): np = 1 and np = 2 agree to 1e-8. (The smoothed
+# void fraction with a sphere at the cut differs between np 1 and np 2 by
+# 4e-3 in velocity already without the new options, so the smoothed kernel
+# is not compared here: see doc/validation.md)
+add_test(NAME parallel.settlingSphere.undisturbedVelocity
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/compareParallel
+            ${FOAMDEM_WORK}/parallel_settling_undisturbed 2 1e-8
+            "foamDictionary constant/couplingProperties -entry undisturbedVelocity -add selfInducedCorrection && foamDictionary system/blockMeshDict -entry blocks -set '(hex (0 1 2 3 4 5 6 7) (10 10 40) simpleGrading (1 1 1))'"
+            settlingSphere no)
+set_tests_properties(parallel.settlingSphere.undisturbedVelocity PROPERTIES
+    LABELS "integration;parallel" TIMEOUT 300 PROCESSORS 2)
+
 # Work-precision report: three CFD steps, a table row each and the plot, and
 # the documented trend (workPrecision.py TRENDS: the error is flat in the step
 # and within 0.5 %) asserted by --check
@@ -183,3 +197,31 @@ set_tests_properties(continuation.settlingSphere.np1 PROPERTIES
     LABELS "integration;tutorial" TIMEOUT 300)
 set_tests_properties(continuation.settlingSphere.np2 PROPERTIES
     LABELS "integration;tutorial;parallel" TIMEOUT 300 PROCESSORS 2)
+
+# Undisturbed fluid velocity (issue 12 item 4; ./Allrun -meshConvergence
+# -ci, meshConvergence.py), each within 1 % of the ODE's terminal velocity:
+#  1. d/h = 0.5 (20 x 20 x 80 mm box, 0.25 s), the tutorial's centre void
+#     fraction and cell kernel with undisturbedVelocity
+#     selfInducedCorrection (measured -0.63 %; without it +3.13 %);
+#  2. d/h = 1 (12 x 12 x 60 mm box, 0.15 s), voidFraction smoothed (divided,
+#     L = 2 d), couplingKernel voidFraction and the correction (measured
+#     0.50 %; the tutorial as it is: 9.06 %).
+# Seen failing with the correction switched off in the code: see
+# doc/validation.md (settlingSphere as the cells shrink)
+add_test(NAME settlingSphere.undisturbedVelocity
+    COMMAND ${TUT} settlingSphere ${FOAMDEM_WORK}/settlingSphere_undisturbed
+            -meshConvergence -ci)
+set_tests_properties(settlingSphere.undisturbedVelocity PROPERTIES
+    LABELS "integration;tutorial;validation" TIMEOUT 600)
+
+# Newton's third law with the undisturbed-velocity treatment (bookkeeping,
+# as momentumBalance.* above): d/h = 0.5 with the correction and the cell
+# kernel (the fluid's implicit term at the velocity read plus the explicit
+# -K_p (u_u - u_s), and the pressure-gradient part as a coupled force), and
+# with the smoothed voidFraction kernel (the filter's symmetric matrix).
+# Measured 3.8e-16 and 7.7e-15; seen failing without the explicit term
+# (see doc/validation.md)
+add_test(NAME momentumBalance.undisturbedVelocity
+    COMMAND sh -c "w=${FOAMDEM_WORK}/momentumBalance_undisturbed && rm -rf $w && mkdir -p $w && cp -r ${FOAMDEM_ROOT}/tutorials/settlingSphere $w/case && cd $w/case && rm -rf results && \${FOAMDEM_PYTHON:-python3} meshConvergence.py --d-over-h 0.5 --with-only --kernel cell --set checkMomentumBalance true --work runsCell --out cell.dat && \${FOAMDEM_PYTHON:-python3} meshConvergence.py --d-over-h 0.5 --with-only --set checkMomentumBalance true --work runsSmoothed --out smoothed.dat && ${BALANCE} runsCell/0.5_with/log.pisoDEMFoam 1e-10 && ${BALANCE} runsSmoothed/0.5_with/log.pisoDEMFoam 1e-10")
+set_tests_properties(momentumBalance.undisturbedVelocity PROPERTIES
+    LABELS integration TIMEOUT 300)

@@ -602,6 +602,22 @@ Foam::foamDEM::demCoupling::demCoupling
     momentum_ = momentumCouplingModel::New(dict_);
     pressureScheme_ = pressureScheme::New(mesh_, dict_);
     checkForceModels();
+    {
+        bool pressureGradientForce = false;
+        for (const forceModel& f : forces_)
+        {
+            pressureGradientForce =
+                pressureGradientForce || f.type() == "pressureGradient";
+        }
+        undisturbed_.reset
+        (
+            new undisturbedVelocity
+            (
+                dict_, mesh_, voidFraction_(), rhoFluid_, nuFluid_,
+                modelType_ == modelTypes::A && pressureGradientForce
+            )
+        );
+    }
     if (Pstream::parRun())
     {
         transfer_.reset(new particleTransfer(mesh_));
@@ -764,24 +780,28 @@ void Foam::foamDEM::demCoupling::update()
     {
         scopedTimer timer(timers_.forces);
         particleData& p = particles_;
-        forAll(p.cell, i)
-        {
-            const label c = p.cell[i];
-            p.fluidVelocity[i] = c >= 0 ? U_[c] : vector::zero;
-        }
-        p.dragCoeff = 0;
-        p.coupledForce = Zero;
-        p.uncoupledForce = Zero;
-        for (const forceModel& f : forces_)
-        {
-            f.addForce(p);
-        }
+        // u_f at the particles (the cell's U, or read with the void
+        // fraction's kernel), then the forces, with the undisturbed u_f if
+        // the self-induced velocity is corrected
+        undisturbed_->read(U_, p);
+        undisturbed_->evaluate(p, forces_);
 
         const label nCells = mesh_.nCells();
         scalarField sumK(nCells, Zero);
         vectorField sumKv(nCells, Zero);
         vectorField forceOnFluid(nCells, Zero);
-        momentum_->distribute(p, sumK, sumKv, forceOnFluid);
+        momentum_->distribute
+        (
+            p, sumK, sumKv, forceOnFluid,
+            undisturbed_->spreads() ? &voidFraction_->cellWeights() : nullptr
+        );
+        if (momentum_->type() == "implicit")
+        {
+            // The fluid's implicit term is -K_p (u - v) at the velocity
+            // read; the rest of -K_p (u_u - v) is explicit
+            undisturbed_->addCorrectionSource(p, forceOnFluid);
+        }
+        undisturbed_->smooth(sumK, sumKv, forceOnFluid);
 
         const scalarField& V = mesh_.V();
         Ksl_.primitiveFieldRef() = sumK/V;

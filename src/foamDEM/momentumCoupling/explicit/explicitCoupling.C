@@ -23,7 +23,8 @@ void Foam::foamDEM::explicitCoupling::distribute
     particleData& p,
     scalarField& sumK,
     vectorField& sumKv,
-    vectorField& forceOnFluid
+    vectorField& forceOnFluid,
+    const particleCellWeights* weights
 ) const
 {
     forAll(p.cell, i)
@@ -40,6 +41,17 @@ void Foam::foamDEM::explicitCoupling::distribute
         p.explicitForce[i] = drag + p.coupledForce[i] + p.uncoupledForce[i];
         p.fluidForce[i] = p.explicitForce[i];
 
-        forceOnFluid[c] -= drag + p.coupledForce[i];
+        if (weights)
+        {
+            for (label k = weights->start(i); k < weights->end(i); ++k)
+            {
+                forceOnFluid[weights->cell(k)] -=
+                    weights->weight(k)*(drag + p.coupledForce[i]);
+            }
+        }
+        else
+        {
+            forceOnFluid[c] -= drag + p.coupledForce[i];
+        }
     }
 }

@@ -25,7 +25,8 @@ void Foam::foamDEM::implicitCoupling::distribute
     particleData& p,
     scalarField& sumK,
     vectorField& sumKv,
-    vectorField& forceOnFluid
+    vectorField& forceOnFluid,
+    const particleCellWeights* weights
 ) const
 {
     forAll(p.cell, i)
@@ -44,8 +45,22 @@ void Foam::foamDEM::implicitCoupling::distribute
         p.fluidForce[i] =
             K*(p.fluidVelocity[i] - p.velocity[i]) + p.explicitForce[i];
 
-        sumK[c] += K;
-        sumKv[c] += K*p.velocity[i];
-        forceOnFluid[c] -= p.coupledForce[i];
+        if (weights)
+        {
+            for (label k = weights->start(i); k < weights->end(i); ++k)
+            {
+                const label cw = weights->cell(k);
+                const scalar w = weights->weight(k);
+                sumK[cw] += w*K;
+                sumKv[cw] += w*K*p.velocity[i];
+                forceOnFluid[cw] -= w*p.coupledForce[i];
+            }
+        }
+        else
+        {
+            sumK[c] += K;
+            sumKv[c] += K*p.velocity[i];
+            forceOnFluid[c] -= p.coupledForce[i];
+        }
     }
 }

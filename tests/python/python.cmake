@@ -31,3 +31,12 @@ set_tests_properties(python.standardDrag PROPERTIES LABELS "unit;python" TIMEOUT
 add_test(NAME python.modelsDocumented
     COMMAND sh -c "\"\${FOAMDEM_PYTHON:-python3}\" ${CMAKE_CURRENT_LIST_DIR}/testModelsDocumented.py ${FOAMDEM_WORK}/modelsDocumented")
 set_tests_properties(python.modelsDocumented PROPERTIES LABELS "integration;python" TIMEOUT 120)
+
+# The liquidFluidizedBed reference (Richardson-Zaki, Garside & Al-Dibouni's
+# exponent against its published equation and by hand, Brown & Lawler's
+# U_t) and the bed-interior voidage from particle heights on random beds of
+# known solid fraction (fails with the whole bed measured instead of the
+# 10th-80th percentile band, or with 0.27 for 2.7 in the exponent)
+add_test(NAME python.richardsonZaki
+    COMMAND sh -c "\"\${FOAMDEM_PYTHON:-python3}\" ${CMAKE_CURRENT_LIST_DIR}/testRichardsonZaki.py")
+set_tests_properties(python.richardsonZaki PROPERTIES LABELS "unit;python" TIMEOUT 60)

@@ -6,7 +6,9 @@ controlDict, fvOptions entries).
 
 --ci        the CI variant (ci* values of DEM/parameters)
 --continue  resume the coupled run: start from the latest time that has both
-            OpenFOAM fields and a DEM restart (DEM/post/restart)
+            OpenFOAM fields and the library's DEM restart of that time
+            (DEM/restart/<time>.restart, writeDEMRestart; a run written
+            before 2026-12-03 has DEM/post/restart/coupled.<step>.restart)
 --np N      processes: the DEM and the CFD are split the same way, in two
             halves across the pipe (z, normal to gravity and the axis) and
             the rest along x: (N/2 1 2) for even N, (N 1 1) for odd N. The
@@ -62,7 +64,10 @@ def write_face_stl(path, name, x_top, x_bottom, y_top, y_bottom, half_width):
 
 
 def latest_restart(case, dt_dem):
-    """(time name, DEM step) of the latest write with a DEM restart."""
+    """(time name, DEM step, restart file) of the latest write with a DEM
+    restart: the library's (DEM/restart/<time>.restart, which also holds
+    the coupling forces of that step) or, for runs written before
+    2026-12-03, LIGGGHTS's own (DEM/post/restart/coupled.<step>.restart)."""
     tdir = case
     if os.path.isdir(os.path.join(case, "processor0")):
         tdir = os.path.join(case, "processor0")
@@ -71,10 +76,11 @@ def latest_restart(case, dt_dem):
         if t <= 0:
             continue
         step = int(round(t / dt_dem))
-        f = os.path.join(case, "DEM/post/restart/coupled.%d.restart" % step)
-        if os.path.isfile(f):
-            return name, step
-    return None, None
+        for f in ("DEM/restart/%s.restart" % name,
+                  "DEM/post/restart/coupled.%d.restart" % step):
+            if os.path.isfile(os.path.join(case, f)):
+                return name, step, f
+    return None, None, None
 
 
 def main():
@@ -154,11 +160,10 @@ def main():
 
     start_time = "0"
     if args.cont:
-        start_time, step = latest_restart(case, dt_dem)
+        start_time, step, restart = latest_restart(case, dt_dem)
         if start_time is None:
             sys.exit("prepare.py --continue: no time directory with a matching"
-                     " DEM restart (DEM/post/restart/coupled.<step>.restart)")
-        restart = "DEM/post/restart/coupled.%d.restart" % step
+                     " DEM restart (DEM/restart/<time>.restart)")
         fresh, segment = 0, str(step)
     else:
         restart = "DEM/post/packed.restart"

@@ -310,6 +310,26 @@ Foam::foamDEM::flowController::flowController
         hasUprev_ = state_.getOrDefault("hasUmean", false);
         Info<< "    flowController " << name_ << ": force " << force_
             << " m/s^2 from " << state_.objectPath() << endl;
+
+        // The last matrix's sensitivity data, if written for these cells
+        // (another decomposition: from inertia, r = dt, at the first step)
+        if (state_.found("rA") && state_.found("multiplier"))
+        {
+            // Dictionary entries hold their lists as text tokens, also in
+            // a file whose header says binary (writeFormat binary): read
+            // them as such
+            ITstream& isA = state_.lookup("rA");
+            isA.format(IOstream::ASCII);
+            scalarField rA(isA);
+            ITstream& isM = state_.lookup("multiplier");
+            isM.format(IOstream::ASCII);
+            scalarField m(isM);
+            if (rA.size() == cells_.size() && m.size() == cells_.size())
+            {
+                rA_.transfer(rA);
+                multiplier_.transfer(m);
+            }
+        }
     }
     else
     {
@@ -424,6 +444,15 @@ void Foam::foamDEM::flowController::correct(volVectorField& U)
     tLatest_ = mesh_.time().value();
     forceLatest_ = force_;
     updatedLatest_ = updated_;
+
+    // The next step's sensitivity uses this step's matrix (rA_) and
+    // multipliers: keep them in the state, so that a run continued from a
+    // write takes the same first update as the run straight through
+    if (rA_.size() == cells_.size())
+    {
+        state_.set("rA", rA_);
+        state_.set("multiplier", multiplier_);
+    }
 }
 
 

@@ -109,8 +109,10 @@ def v_refined(case):
 
 
 def v_seed2(case):
-    # the insertion seed of the packing stage (a prime, as LIGGGHTS wants)
-    sed(os.path.join(case, "DEM/in.pack"), r"(insert/pack seed )49979687", r"\g<1>32452843")
+    # the insertion seed of the packing stage: a prime, as LIGGGHTS wants,
+    # and not a seed of the particle template or distribution (32452843 was:
+    # LIGGGHTS refused it)
+    sed(os.path.join(case, "DEM/in.pack"), r"(insert/pack seed )49979687", r"\g<1>49979693")
 
 
 def v_saffman(case):

@@ -92,3 +92,23 @@ def read_summary(case):
             if len(parts) == 2 and not line.startswith("#"):
                 entries[parts[0]] = parts[1].strip()
     return entries
+
+
+def dump_frames(path):
+    """Frames of a multi-frame LIGGGHTS text dump ('dump custom' to one
+    file): [(step, N x ncol array of the per-atom columns, in file order)]."""
+    import numpy as np
+    frames = []
+    with open(path) as f:
+        lines = f.read().split("\n")
+    i = 0
+    while i < len(lines):
+        if lines[i].startswith("ITEM: TIMESTEP"):
+            step = int(lines[i + 1])
+            n = int(lines[i + 3])
+            rows = [lines[i + 9 + k].split() for k in range(n)]
+            frames.append((step, np.array([[float(x) for x in r] for r in rows])))
+            i += 9 + n
+        else:
+            i += 1
+    return frames

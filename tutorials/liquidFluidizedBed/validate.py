@@ -57,21 +57,7 @@ def read_stages(path):
 
 def read_frames(path):
     """A multi-frame LIGGGHTS dump 'id z' -> list of (step, z array)."""
-    frames = []
-    with open(path) as f:
-        lines = f.read().split("\n")
-    i = 0
-    while i < len(lines):
-        if lines[i].startswith("ITEM: TIMESTEP"):
-            step = int(lines[i + 1])
-            n = int(lines[i + 3])
-            body = lines[i + 9:i + 9 + n]
-            z = np.array([float(b.split()[1]) for b in body])
-            frames.append((step, z))
-            i += 9 + n
-        else:
-            i += 1
-    return frames
+    return [(step, cols[:, 1]) for step, cols in caseio.dump_frames(path)]
 
 
 def law_voidage(law, u, d, rho, mu, rhop, g):

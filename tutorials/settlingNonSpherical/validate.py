@@ -65,21 +65,7 @@ def cloud_values(path):
 
 def read_dump(path):
     """Frames of a LIGGGHTS 'custom id x y z' dump: [(step, N x 3 array)]."""
-    frames = []
-    with open(path) as f:
-        lines = f.read().split("\n")
-    i = 0
-    while i < len(lines):
-        if lines[i].startswith("ITEM: TIMESTEP"):
-            step = int(lines[i + 1])
-            n = int(lines[i + 3])
-            rows = [lines[i + 9 + k].split() for k in range(n)]
-            xyz = np.array([[float(r[1]), float(r[2]), float(r[3])] for r in rows])
-            frames.append((step, xyz))
-            i += 9 + n
-        else:
-            i += 1
-    return frames
+    return [(step, cols[:, 1:4]) for step, cols in caseio.dump_frames(path)]
 
 
 def body_axes(xyz):

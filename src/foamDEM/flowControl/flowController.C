@@ -447,8 +447,9 @@ void Foam::foamDEM::flowController::correct(volVectorField& U)
 
     // The next step's sensitivity uses this step's matrix (rA_) and
     // multipliers: keep them in the state, so that a run continued from a
-    // write takes the same first update as the run straight through
-    if (rA_.size() == cells_.size())
+    // write takes the same first update as the run straight through (only
+    // the state written matters: copied at write times only)
+    if (mesh_.time().writeTime() && rA_.size() == cells_.size())
     {
         state_.set("rA", rA_);
         state_.set("multiplier", multiplier_);

@@ -1,5 +1,7 @@
 # Integration tests: tutorials' CI modes, particle output, bad input.
 set(FOAMDEM_WORK ${CMAKE_BINARY_DIR}/work)
+# Created at configure time: some tests copy a case into it with a plain cp
+file(MAKE_DIRECTORY ${FOAMDEM_WORK})
 set(TUT ${CMAKE_CURRENT_SOURCE_DIR}/integration/runTutorial)
 
 # Each tutorial registers its tests in tests/tutorials/<name>.cmake, each

@@ -620,7 +620,21 @@ Foam::foamDEM::demCoupling::demCoupling
     }
     if (Pstream::parRun())
     {
-        transfer_.reset(new particleTransfer(mesh_));
+        transfer_.reset(new particleTransfer(mesh_, engine_->reach()));
+        const label nNeighbours = returnReduce
+        (
+            max(transfer_->sendProcs().size(), transfer_->recvProcs().size()),
+            maxOp<label>()
+        );
+        Info<< "foamDEM exchange: point-to-point with neighbouring ranks"
+            << " only (at most " << nNeighbours << " of "
+            << Pstream::nProcs() - 1 << " other ranks)" << endl;
+        if (logExchange_)
+        {
+            Pout<< "foamDEM exchange neighbours: sends to "
+                << transfer_->sendProcs() << ", receives from "
+                << transfer_->recvProcs() << endl;
+        }
     }
 
     // What to exchange: only what the selected models need
@@ -676,6 +690,13 @@ Foam::foamDEM::demCoupling::~demCoupling()
         << ", void fraction " << t.voidFraction
         << ", forces " << t.forces << ", push " << t.push
         << "), particle output " << t.output << endl;
+    if (transfer_ && transfer_->nAllRanks())
+    {
+        // The same on every rank (decided by a reduction)
+        Info<< "foamDEM exchange: " << transfer_->nAllRanks()
+            << " coupling step(s) exchanged with all ranks (particles"
+            << " outside their DEM rank's reach)" << endl;
+    }
     progress_.summary(splitSoFar());
 }
 
@@ -839,7 +860,9 @@ void Foam::foamDEM::demCoupling::update()
             Pout<< "foamDEM exchange: DEM particles " << particles_.size()
                 << ", sent " << transfer_->nSent()
                 << ", received " << transfer_->nReceived()
-                << ", bytes sent " << transfer_->bytesSent() << endl;
+                << ", bytes sent " << transfer_->bytesSent()
+                << ", to ranks " << transfer_->lastTo()
+                << ", from ranks " << transfer_->lastFrom() << endl;
         }
     }
     if (!skipPush_)

@@ -189,7 +189,8 @@ void Foam::foamDEM::stabilityGuard::checkCellSize(scalar dMax)
     locate->locate(p);
     if (Pstream::parRun())
     {
-        particleTransfer(mesh).gather(p, locate(), plan);
+        particleTransfer(mesh, coupling_.engine().reach())
+            .gather(p, locate(), plan);
     }
 
     const scalarField& V = mesh.V();

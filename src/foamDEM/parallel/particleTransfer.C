@@ -1,16 +1,37 @@
 #include "particleTransfer.H"
-#include "PstreamBuffers.H"
+#include "neighbourExchange.H"
 
-Foam::foamDEM::particleTransfer::particleTransfer(const fvMesh& mesh)
+namespace
+{
+bool overlapsAny
+(
+    const Foam::boundBox& b,
+    const Foam::List<Foam::boundBox>& boxes
+)
+{
+    for (const Foam::boundBox& c : boxes)
+    {
+        if (b.overlaps(c)) return true;
+    }
+    return false;
+}
+}
+
+
+Foam::foamDEM::particleTransfer::particleTransfer
+(
+    const fvMesh& mesh,
+    const List<boundBox>& reach
+)
 :
     mesh_(mesh),
+    reach_(reach),
     procBoxes_(Pstream::nProcs()),
     nDEMLocal_(0),
-    sent_(Pstream::nProcs()),
-    received_(Pstream::nProcs()),
     bytesSent_(0),
     nSent_(0),
-    nReceived_(0)
+    nReceived_(0),
+    nAllRanks_(0)
 {
     // A slightly inflated box, so that particles on a processor face are
     // asked on both sides
@@ -18,9 +39,62 @@ Foam::foamDEM::particleTransfer::particleTransfer(const fvMesh& mesh)
     const scalar tol = 1e-6*max(box.mag(), SMALL);
     box.min() -= vector::uniform(tol);
     box.max() += vector::uniform(tol);
-    procBoxes_[Pstream::myProcNo()] = box;
+    const label me = Pstream::myProcNo();
+    procBoxes_[me] = box;
     Pstream::gatherList(procBoxes_);
     Pstream::scatterList(procBoxes_);
+
+    meshBox_ = treeBoundBox(procBoxes_[0].min(), procBoxes_[0].max());
+    for (const treeBoundBox& b : procBoxes_)
+    {
+        meshBox_.add(b);
+    }
+
+    // Every rank's DEM reach, once
+    List<List<boundBox>> reaches(Pstream::nProcs());
+    reaches[me] = reach_;
+    Pstream::gatherList(reaches);
+    Pstream::scatterList(reaches);
+
+    DynamicList<label> to, from, all;
+    forAll(procBoxes_, proci)
+    {
+        if (proci == me) continue;
+        all.append(proci);
+        if (overlapsAny(procBoxes_[proci], reaches[me])) to.append(proci);
+        if (overlapsAny(procBoxes_[me], reaches[proci])) from.append(proci);
+    }
+    sendProcs_.transfer(to);
+    recvProcs_.transfer(from);
+    allProcs_.transfer(all);
+}
+
+
+void Foam::foamDEM::particleTransfer::ask
+(
+    const particleData& p,
+    const labelList& procs,
+    labelListList& asked
+) const
+{
+    asked.setSize(procs.size());
+    for (labelList& a : asked) a.clear();
+    List<DynamicList<label>> lists(procs.size());
+    forAll(p.cell, i)
+    {
+        if (p.cell[i] >= 0) continue;
+        forAll(procs, k)
+        {
+            if (procBoxes_[procs[k]].contains(p.position[i]))
+            {
+                lists[k].append(i);
+            }
+        }
+    }
+    forAll(lists, k)
+    {
+        asked[k].transfer(lists[k]);
+    }
 }
 
 
@@ -31,117 +105,150 @@ Foam::label Foam::foamDEM::particleTransfer::gather
     const exchangePlan& plan
 )
 {
-    const label nProcs = Pstream::nProcs();
-    const label me = Pstream::myProcNo();
     nDEMLocal_ = p.size();
     bytesSent_ = 0;
 
-    // 1. Ask the ranks whose box holds a particle that we do not contain
-    labelListList asked(nProcs);
+    // 1. Ask the neighbours whose box holds a particle that we do not
+    //    contain. A particle outside this rank's DEM reach but in another
+    //    rank's box (a stray) makes this step exchange with all ranks.
+    labelListList asked;
+    ask(p, sendProcs_, asked);
+    label nStray = 0;
     forAll(p.cell, i)
     {
         if (p.cell[i] >= 0) continue;
-        for (label proci = 0; proci < nProcs; ++proci)
+        const point& x = p.position[i];
+        // Within the reach, only neighbours' boxes can hold it (that is how
+        // the neighbours were chosen)
+        if (overlapsAny(boundBox(x, x), reach_) || !meshBox_.contains(x))
         {
-            if (proci != me && procBoxes_[proci].contains(p.position[i]))
+            continue;
+        }
+        for (const label proci : allProcs_)
+        {
+            if (procBoxes_[proci].contains(x))
             {
-                asked[proci].append(i);
+                ++nStray;
+                break;
             }
         }
     }
-
-    PstreamBuffers queries(Pstream::commsTypes::nonBlocking);
-    for (label proci = 0; proci < nProcs; ++proci)
+    if (returnReduce(nStray, sumOp<label>()) > 0)
     {
-        if (asked[proci].size())
+        if (nStray && !nAllRanks_)
         {
-            UOPstream os(proci, queries);
-            os << pointField(UIndirectList<point>(p.position, asked[proci]))
-               << labelList(UIndirectList<label>(p.id, asked[proci]));
-            bytesSent_ += asked[proci].size()*(3*sizeof(scalar) + sizeof(label));
+            Pout<< "foamDEM exchange: " << nStray << " particle(s) outside"
+                << " the DEM reach of this rank at t = "
+                << mesh_.time().timeName()
+                << " s: this step exchanges with all ranks (such steps are"
+                << " counted in the summary at the end)" << endl;
+        }
+        to_ = allProcs_;
+        from_ = allProcs_;
+        ++nAllRanks_;
+        ask(p, to_, asked);
+    }
+    else
+    {
+        to_ = sendProcs_;
+        from_ = recvProcs_;
+    }
+
+    neighbourExchange queries(to_, from_);
+    forAll(to_, k)
+    {
+        if (asked[k].size())
+        {
+            queries.out(k)
+                << pointField(UIndirectList<point>(p.position, asked[k]))
+                << labelList(UIndirectList<label>(p.id, asked[k]));
         }
     }
-    labelList queriesSizes;
-    queries.finishedSends(queriesSizes);
+    queries.exchange();
+    bytesSent_ += queries.bytesSent();
 
     // Answer: which of the asked positions lie in this rank's mesh
-    PstreamBuffers answers(Pstream::commsTypes::nonBlocking);
-    for (label proci = 0; proci < nProcs; ++proci)
+    neighbourExchange answers(from_, to_);
+    forAll(from_, k)
     {
-        if (!queriesSizes[proci]) continue;
-        UIPstream is(proci, queries);
+        if (!queries.received(k)) continue;
         particleData q;
-        is >> q.position >> q.id;
+        queries.in(k) >> q.position >> q.id;
         q.cell.setSize(q.position.size(), -1);
         locate.locate(q);
 
         boolList found(q.size());
-        forAll(found, k)
+        forAll(found, j)
         {
-            found[k] = q.cell[k] >= 0;
+            found[j] = q.cell[j] >= 0;
         }
-        UOPstream os(proci, answers);
-        os << found;
-        bytesSent_ += found.size();
+        answers.out(k) << found;
     }
-    labelList answersSizes;
-    answers.finishedSends(answersSizes);
+    answers.exchange();
+    bytesSent_ += answers.bytesSent();
 
-    // 2. Each particle goes to the lowest rank that contains it
+    // 2. Each particle goes to the lowest rank that contains it (to_ is
+    //    in rank order, so the lowest slot)
     labelList owner(p.size(), -1);
-    for (label proci = 0; proci < nProcs; ++proci)
+    forAll(to_, k)
     {
-        if (!answersSizes[proci]) continue;
-        UIPstream is(proci, answers);
+        if (!answers.received(k)) continue;
         boolList found;
-        is >> found;
-        forAll(found, k)
+        answers.in(k) >> found;
+        forAll(found, j)
         {
-            const label i = asked[proci][k];
-            if (found[k] && (owner[i] < 0 || proci < owner[i]))
+            const label i = asked[k][j];
+            if (found[j] && owner[i] < 0)
             {
-                owner[i] = proci;
+                owner[i] = k;
             }
         }
     }
 
+    sent_.setSize(to_.size());
     for (labelList& s : sent_) s.clear();
     label nOutside = 0;
-    forAll(owner, i)
     {
-        if (owner[i] >= 0)
+        List<DynamicList<label>> lists(to_.size());
+        forAll(owner, i)
         {
-            sent_[owner[i]].append(i);
+            if (owner[i] >= 0)
+            {
+                lists[owner[i]].append(i);
+            }
+            else if (p.cell[i] < 0)
+            {
+                ++nOutside;
+            }
         }
-        else if (p.cell[i] < 0)
+        forAll(lists, k)
         {
-            ++nOutside;
+            sent_[k].transfer(lists[k]);
         }
     }
 
-    PstreamBuffers moves(Pstream::commsTypes::nonBlocking);
+    neighbourExchange moves(to_, from_);
     nSent_ = 0;
-    for (label proci = 0; proci < nProcs; ++proci)
+    forAll(to_, k)
     {
-        if (sent_[proci].size())
+        if (sent_[k].size())
         {
-            UOPstream os(proci, moves);
-            p.writeDEMData(os, sent_[proci], plan);
-            nSent_ += sent_[proci].size();
+            p.writeDEMData(moves.out(k), sent_[k], plan);
+            nSent_ += sent_[k].size();
         }
     }
-    labelList movesSizes;
-    moves.finishedSends(movesSizes);
+    moves.exchange();
+    bytesSent_ += moves.bytesSent();
 
     nReceived_ = 0;
-    for (label proci = 0; proci < nProcs; ++proci)
+    received_.setSize(from_.size());
+    forAll(from_, k)
     {
-        received_[proci].clear();
-        if (!movesSizes[proci]) continue;
-        UIPstream is(proci, moves);
+        received_[k].clear();
+        if (!moves.received(k)) continue;
         const label n0 = p.size();
-        p.appendDEMData(is, plan);
-        received_[proci] = identity(p.size() - n0, n0);
+        p.appendDEMData(moves.in(k), plan);
+        received_[k] = identity(p.size() - n0, n0);
         nReceived_ += p.size() - n0;
     }
 
@@ -160,14 +267,6 @@ Foam::label Foam::foamDEM::particleTransfer::gather
         }
     }
 
-    // Bytes of the DEM data moved: position and id always, plus the rest
-    label perParticle = 3*sizeof(scalar) + sizeof(label);
-    if (plan.has(quantity::velocity)) perParticle += 3*sizeof(scalar);
-    if (plan.has(quantity::radius)) perParticle += sizeof(scalar);
-    if (plan.has(quantity::density)) perParticle += sizeof(scalar);
-    if (plan.has(quantity::angularVelocity)) perParticle += 3*sizeof(scalar);
-    bytesSent_ += nSent_*perParticle;
-
     return returnReduce(nOutside, sumOp<label>());
 }
 
@@ -178,27 +277,24 @@ void Foam::foamDEM::particleTransfer::scatterBack
     const exchangePlan& plan
 )
 {
-    const label nProcs = Pstream::nProcs();
-
-    PstreamBuffers results(Pstream::commsTypes::nonBlocking);
-    for (label proci = 0; proci < nProcs; ++proci)
+    neighbourExchange results(from_, to_);
+    forAll(from_, k)
     {
-        const labelList& slots = received_[proci];
+        const labelList& slots = received_[k];
         if (slots.size())
         {
-            UOPstream os(proci, results);
-            p.writeResults(os, slots.first(), slots.size());
-            bytesSent_ += slots.size()*(11*sizeof(scalar));
+            p.writeResults(results.out(k), slots.first(), slots.size());
         }
     }
-    labelList resultsSizes;
-    results.finishedSends(resultsSizes);
+    results.exchange();
+    bytesSent_ += results.bytesSent();
 
-    for (label proci = 0; proci < nProcs; ++proci)
+    forAll(to_, k)
     {
-        if (!resultsSizes[proci]) continue;
-        UIPstream is(proci, results);
-        p.readResults(is, sent_[proci]);
+        if (results.received(k))
+        {
+            p.readResults(results.in(k), sent_[k]);
+        }
     }
 
     p.resize(nDEMLocal_, plan);

@@ -17,6 +17,7 @@
 #include "atom.h"
 #include "update.h"
 #include "domain.h"
+#include "neighbor.h"
 #include "modify.h"
 #include "fix.h"
 #include "fix_gravity.h"
@@ -562,6 +563,50 @@ Foam::boundBox Foam::foamDEM::liggghtsEngine::domain() const
     const double* lo = lmp_->domain->boxlo;
     const double* hi = lmp_->domain->boxhi;
     return boundBox(point(lo[0], lo[1], lo[2]), point(hi[0], hi[1], hi[2]));
+}
+
+
+Foam::List<Foam::boundBox> Foam::foamDEM::liggghtsEngine::reach() const
+{
+    // LIGGGHTS migrates an atom at the latest when it has moved half the
+    // neighbour skin since the last rebuild; the full skin is the margin.
+    // (A multisphere body's centre of mass goes with the rank that owns
+    // it.) Particles outside these boxes are still found: particleTransfer
+    // then exchanges with all ranks for that step.
+    const LAMMPS_NS::Domain& box = *lmp_->domain;
+    const scalar skin = lmp_->neighbor->skin;
+    point lo(box.sublo[0], box.sublo[1], box.sublo[2]);
+    point hi(box.subhi[0], box.subhi[1], box.subhi[2]);
+    lo -= vector::uniform(skin);
+    hi += vector::uniform(skin);
+
+    // The box and its images by -1, 0, +1 periods in each periodic direction
+    DynamicList<boundBox> boxes;
+    for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j)
+    for (int k = -1; k <= 1; ++k)
+    {
+        const int shift[3] = {i, j, k};
+        vector s(Zero);
+        bool valid = true;
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (shift[d] && !box.periodicity[d]) valid = false;
+            s[d] = shift[d]*box.prd[d];
+        }
+        if (!valid) continue;
+        const point l(lo + s), h(hi + s);
+        bool overlaps = true;
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (h[d] < box.boxlo[d] || l[d] > box.boxhi[d]) overlaps = false;
+        }
+        if (overlaps || (!i && !j && !k))
+        {
+            boxes.append(boundBox(l, h));
+        }
+    }
+    return List<boundBox>(std::move(boxes));
 }
 
 

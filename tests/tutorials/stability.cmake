@@ -22,8 +22,10 @@ foreach(c zeroParticles outsideMesh outlet stiffE1e9 stiffE1e10 fineImplicit
 endforeach()
 
 # Parallel (mpirun -np 2): a rank count that does not match the
-# decomposition, and an error met by one rank only
-foreach(c rankMismatch oneRankError oneRankErrorMaster)
+# decomposition, an error met by one rank only, and 800 particles leaving
+# through an outlet from both ranks (outletParallel, ~45 s; seen failing
+# with the engine's particle count frozen at its first value)
+foreach(c rankMismatch oneRankError oneRankErrorMaster outletParallel)
     add_test(NAME stability.${c}
         COMMAND ${STABILITY} ${c} ${FOAMDEM_WORK}/stability/${c})
     set_tests_properties(stability.${c} PROPERTIES

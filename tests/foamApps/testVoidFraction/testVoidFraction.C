@@ -21,7 +21,9 @@ Description
     Suites (-suite): box (sheared, graded mesh with walls), periodic (cyclic
     in x: conservation and spreading across the periodic plane), parallel
     (the box decomposed; processor patches), badInput (FatalIOError on
-    inconsistent keys).
+    inconsistent keys), snapped (a snappyHexMesh mesh, the
+    cohesiveBedEvacuation tutorial's: hinted locate against findCell with
+    tetrahedra at 20 000 random points, then the box checks).
 
     Exit code 1 when any check fails; every check prints PASS or FAIL.
 
@@ -51,6 +53,11 @@ namespace
 
 label nPassed = 0;
 label nFailed = 0;
+
+//- Relative bound on the averaging's momentum conservation: 1e-12; the
+//  snapped suite sets 1e-10 (smoothed: the filter's tails below the
+//  averaging's cut-off are dropped, 1e-11 to 4e-11 on snapped meshes)
+scalar averagingTol = 1e-12;
 
 template<class... Args>
 std::string str(const Args&... args)
@@ -401,9 +408,9 @@ autoPtr<voidFractionModel> testModel
         const scalar error = mag(cellMomentum - particleMomentum)/scale;
         check
         (
-            error <= 1e-12,
+            error <= averagingTol,
             str(name, ": averaging conserves sum_i V_i v_i, relative error ",
-                error)
+                error, " (bound ", averagingTol, ")")
         );
 
         // A weighted average: within the particles' range, per component
@@ -738,6 +745,77 @@ void boxSuite(const fvMesh& mesh)
             str("alphaMin 0.5 reached: min eps ", gMin(alpha.primitiveField()))
         );
     }
+}
+
+
+//- Locate on a snapped mesh (hexahedra cut at the walls, prisms and
+//  polyhedra, some not convex): hinted locate, whose face-plane tests are
+//  exact only for convex cells, against OpenFOAM's findCell with the cells
+//  cut into tetrahedra from their centres (CELL_TETS: exact for any cell
+//  star-shaped about its centre; the default FACE_DIAG_TRIS mode missed
+//  1.7 % of the points here, points that CELL_TETS puts in the cell hinted
+//  found), at random points in random cells' bounding boxes; then the box
+//  suite's checks on this mesh
+void snappedSuite(const fvMesh& mesh)
+{
+    // Random points in the bounding boxes of random cells (10 % larger):
+    // inside those cells, their neighbours, or outside the mesh near walls
+    Random rnd(1234567);
+    const label n = 20000;
+    particleSet s;
+    for (label i = 0; i < n; ++i)
+    {
+        const label c = rnd.position<label>(0, mesh.nCells() - 1);
+        boundBox cb(mesh.points(), mesh.cellPoints()[c], false);
+        cb.inflate(0.1);
+        s.add(cb.min() + cmptMultiply(rnd.sample01<vector>(), cb.span()), 0);
+    }
+    const particleData p(makeParticles(mesh, s));
+    label nIn = 0, nWrong = 0, nMissed = 0, nExtra = 0;
+    label nNonHex = 0;
+    scalar worstExtra = 0;
+    forAll(p.cell, i)
+    {
+        const label c = mesh.findCell(p.position[i], polyMesh::CELL_TETS);
+        if (c >= 0)
+        {
+            ++nIn;
+            nNonHex += mesh.cells()[c].size() != 6;
+            if (p.cell[i] < 0) ++nMissed;
+            else if (p.cell[i] != c) ++nWrong;
+        }
+        else if (p.cell[i] >= 0)
+        {
+            ++nExtra;
+            // how far outside: distance to the nearest boundary face centre
+            // relative to the cell's size
+            scalar dMin = GREAT;
+            for (const label f : mesh.cells()[p.cell[i]])
+            {
+                if (!mesh.isInternalFace(f))
+                {
+                    dMin = min(dMin, mag(mesh.faceCentres()[f] - p.position[i]));
+                }
+            }
+            worstExtra = max(worstExtra, dMin/Foam::cbrt(mesh.V()[p.cell[i]]));
+        }
+    }
+    Info<< "locate: " << nIn << " of " << n << " random points in the mesh ("
+        << nNonHex << " in cells that are not six-faced), " << nWrong
+        << " in another cell, " << nMissed << " not found, " << nExtra
+        << " found outside (farthest from a boundary face centre of its cell: "
+        << worstExtra << " cell sizes)" << nl;
+    check(nIn > n/10, str("locate: ", nIn, " random points in the mesh"));
+    check
+    (
+        nWrong == 0 && nMissed == 0 && nExtra == 0,
+        str("locate: hinted agrees with findCell (tetrahedra) at all ", n,
+            " points (", nWrong, " in another cell, ", nMissed,
+            " not found, ", nExtra, " found outside)")
+    );
+
+    averagingTol = 1e-10;
+    boxSuite(mesh);
 }
 
 
@@ -1152,7 +1230,7 @@ void shapesSuite(const fvMesh& mesh)
 int main(int argc, char *argv[])
 {
     argList::addNote("Tests of the void fraction models and averaging");
-    argList::addOption("suite", "name", "box, periodic, parallel, badInput, shapes or timing");
+    argList::addOption("suite", "name", "box, snapped, periodic, parallel, badInput, shapes or timing");
     argList::addOption("nParticles", "N", "timing: number of particles");
     argList::addOption("radius", "r", "timing: radius in cell sizes");
 
@@ -1167,6 +1245,10 @@ int main(int argc, char *argv[])
     if (suite == "box")
     {
         boxSuite(mesh);
+    }
+    else if (suite == "snapped")
+    {
+        snappedSuite(mesh);
     }
     else if (suite == "periodic")
     {

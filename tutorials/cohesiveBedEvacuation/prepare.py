@@ -206,9 +206,6 @@ def main():
     args = ap.parse_args()
     P = read_props(".", args.ci)
 
-    def p(key):
-        return P[key]
-
     S0, sz = geometry(P)
     vol = S0.volume(["walls", "supply", "vent"])
     R, Hc, a = P["chamberRadius"], P["chamberHeight"], P["tubeWidth"]
@@ -229,7 +226,7 @@ def main():
 
     # Background mesh: the turned geometry's bounding box plus a cell
     pts = [q for tris in S.regions.values() for t in tris for q in t]
-    cell = p("backgroundCell")
+    cell = P["backgroundCell"]
     lo = [min(q[i] for q in pts) - cell for i in range(3)]
     hi = [max(q[i] for q in pts) + cell for i in range(3)]
     ncell = [max(1, int(math.ceil((hi[i] - lo[i]) / cell))) for i in range(3)]
@@ -245,9 +242,9 @@ def main():
     r = P["diameter"] / 2
     G = P["youngsModulus"] / (2 * (1 + P["poissonsRatio"]))
     t_r = math.pi * r * math.sqrt(P["density"] / G) / (0.1631 * P["poissonsRatio"] + 0.8766)
-    nc = int(p("couplingInterval"))
-    n_write = int(math.ceil(p("writeInterval") / (nc * P["rayleighFraction"] * t_r)))
-    dt_cfd = p("writeInterval") / n_write
+    nc = int(P["couplingInterval"])
+    n_write = int(math.ceil(P["writeInterval"] / (nc * P["rayleighFraction"] * t_r)))
+    dt_cfd = P["writeInterval"] / n_write
     dt = dt_cfd / nc
     with open("DEM/post/setupDict", "w") as f:
         f.write("// written by prepare.py from %s%s\n" % (PROPS, " (ci)" if args.ci else ""))
@@ -257,7 +254,7 @@ def main():
         f.write("surfaceLevel %d;\n" % int(P["surfaceLevel"]))
         f.write("insidePoint (%.9g %.9g %.9g);\n" % inside)
         f.write("endTime %.9g;\ndeltaT %.12g;\nwriteInterval %.9g;\n"
-                % (p("endTime"), dt_cfd, p("writeInterval")))
+                % (P["endTime"], dt_cfd, P["writeInterval"]))
     # Gas at the boundaries (kinematic), k and epsilon at the supply
     rho_g = P["rhoGas"]
     with open("DEM/post/setupDict", "a") as f:
@@ -280,7 +277,7 @@ def main():
     dem_hi = [max(q[i] for q in pts) + m for i in range(3)]
     n_part = int(P["nParticles"])
     print_every = max(1, int(round(1e-3 / dt)))
-    write_steps = int(round(p("writeInterval") / dt))
+    write_steps = int(round(P["writeInterval"] / dt))
     v = dict(
         nProcX=args.np,
         xlo=dem_lo[0], xhi=dem_hi[0], ylo=dem_lo[1], yhi=dem_hi[1],
@@ -289,8 +286,8 @@ def main():
         mu=P["friction"], ced=P["cohesionEnergyDensity"],
         r=d / 2, rho=P["density"], skin=0.3 * d, demDt=dt,
         nParticles=n_part, insRadius=R - 0.6 * d,
-        insLo=max(p("fillLow"), 0.6 * d), insHi=p("fillHeight"),
-        nSettle=int(round(p("settleTime") / dt)),
+        insLo=max(P["fillLow"], 0.6 * d), insHi=P["fillHeight"],
+        nSettle=int(round(P["settleTime"] / dt)),
         ventNx=math.cos(th), ventNy=math.sin(th),
         chamberR=R, chamberH=Hc, tubeR=0.5 * a, tubeLo=Hc + 0.005,
         tubeHi=P["tubeTop"] - 0.005,

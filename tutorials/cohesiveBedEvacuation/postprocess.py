@@ -47,13 +47,26 @@ def read_table(path):
     return rows
 
 
+def merge_segments(rows):
+    """Rows of a run and its continuations, in the order written: where a
+    continuation starts at a time t0 the earlier run may already have lines
+    at t >= t0 (written after its last write, before it stopped); the
+    continued run's lines replace them."""
+    out = []
+    for r in rows:
+        if out and r[0] <= out[-1][0]:
+            out = [q for q in out if q[0] < r[0]]
+        out.append(r)
+    return out
+
+
 def field_value(name):
     files = sorted(glob.glob("postProcessing/%s/*/surfaceFieldValue.dat" % name),
                    key=lambda f: float(f.split("/")[-2]))
     rows = []
     for f in files:
         rows.extend(read_table(f))
-    return rows
+    return merge_segments(rows)
 
 
 def classify(P, x, y, z):
@@ -77,12 +90,18 @@ def main():
     a = ap.parse_args()
     P = prepare.read_props(".", a.ci)
     setup = caseio.liggghts_variables("DEM/post/setup.lig")
-    n0 = int(setup["nParticles"])
+    n_asked = int(setup["nParticles"])
     dt = float(setup["demDt"])
     end_time = caseio.foam_scalar("DEM/post/setupDict", "endTime")
     os.makedirs("results", exist_ok=True)
 
-    ev = read_table("DEM/post/evacuation.dat")
+    ev = merge_segments(read_table("DEM/post/evacuation.dat"))
+    # The bed: what the fill stage inserted (insert/pack may fall short of
+    # nParticles when the region is too small for it), at the first line
+    n0 = int(round(ev[0][1] + ev[0][3]))
+    if n0 != n_asked:
+        print("postprocess.py: the fill inserted %d of the %d particles asked for"
+              % (n0, n_asked))
     # the DEM's time is step x dt from the restart's step 0
     t = [r[0] for r in ev]
     n = [int(round(r[1])) for r in ev]
@@ -141,7 +160,8 @@ def main():
     moving = [v for v, k in zip(vz_tube, in_tube) if k > 0]
     vz_mean = sum(moving) / len(moving) if moving else float("nan")
     rows = [
-        ("particlesInitial", n0, ""),
+        ("particlesAsked", n_asked, ""),
+        ("particlesInitial", n0, "inserted by the fill"),
         ("particlesPresentEnd", n[-1], ""),
         ("deletedAtVentEnd", deleted[-1], ""),
         ("fractionEvacuatedEnd", 1 - in_chamber[-1] / n0, ""),
@@ -189,6 +209,8 @@ def main():
           "flow established: vent flow / supply flow %.4f (within 1 %%), vent "
           "velocity %.1f m/s (> 30) varying by %.1f %% (< 10 %%) over the last quarter"
           % (qv / qs, u_mean, 100 * u_spread))
+    check(n0 == n_asked, "the fill inserted all %d particles asked for (%d)"
+          % (n_asked, n0))
     check(deleted[-1] > 0,
           "%d particle(s) crossed the vent and were deleted" % deleted[-1])
     bad = [(tt, k, d) for tt, k, d in zip(t, n, deleted) if k + d != n0]
@@ -196,7 +218,7 @@ def main():
           % (len(t), n0, "" if not bad else "; first mismatch at t = %g: %d + %d"
              % bad[0]))
     check(t[-1] >= end_time - 2e-3 and "End" in open(
-        glob.glob("log.pisoDEMFoam*")[0]).read(),
+        max(glob.glob("log.pisoDEMFoam*"), key=os.path.getmtime)).read(),
           "the run reached t = %.4g s of %.4g s and ended" % (t[-1], end_time))
     return 0 if ok else 1
 

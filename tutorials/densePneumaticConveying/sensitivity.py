@@ -37,6 +37,9 @@ or one that foamDEM makes differently):
                 smoothing (the reference smooths with L = 2 d)
   refined       CFD mesh refined once in every direction (O-grid 8 x 8
                 core + 4 radial cells, 5 mm along x: 8 x the cells)
+  refined16     refined as 'refined', but the wall stays the tutorial's
+                16-facet polygon (the same fluid volume): the cell size
+                alone
   seed2         the packing of a second insertion seed (the same shape,
                 particle count and fill method)
   saffman       Saffman's lift without Mei's correction (the reference's
@@ -108,6 +111,44 @@ def v_refined(case):
     parameter(case, "cellLength", 0.005)
 
 
+def wall_polygon(case, facets_per_edge=4):
+    """The pipe wall as the polygon of the tutorial's own mesh: each of the
+    O-grid's four outer block edges (90 degrees of the circle, an arc in
+    system/blockMeshDict) becomes a polyLine through the points the
+    tutorial's nSquare = 4 cells put on that arc. A finer mesh then keeps
+    the tutorial's cross-section (16 facets, 0.00540 m^3 of fluid, as the
+    reference's mesh) instead of approaching the exact cylinder."""
+    import math
+    with open(os.path.join(case, "DEM/parameters")) as f:
+        R = 0.5 * float(re.search(r"^variable\s+pipeDiameter\s+equal\s+(\S+)",
+                                  f.read(), re.M).group(1))
+    # arc a b (x y z): the edge from vertex a to vertex b; vertices 4-7 at
+    # xlo and 12-15 at xhi sit on the wall at 225, 315, 45 and 135 degrees
+    start = {4: 225, 5: 315, 6: 45, 7: 135}
+
+    def polyline(m):
+        a, b, x = int(m.group(1)), int(m.group(2)), m.group(3)
+        t0 = start[a if a < 8 else a - 8]
+        pts = " ".join("(%s %.12g %.12g)" % (x, R * math.cos(math.radians(t)),
+                                             R * math.sin(math.radians(t)))
+                       for t in (t0 + 90.0 * k / facets_per_edge
+                                 for k in range(1, facets_per_edge)))
+        return "polyLine %d %d (%s)" % (a, b, pts)
+    path = os.path.join(case, "system/blockMeshDict")
+    with open(path) as f:
+        text = f.read()
+    new, n = re.subn(r"arc (\d+) (\d+) \((\$x(?:lo|hi)) \S+ \S+\)", polyline, text)
+    if n != 8:
+        sys.exit("sensitivity.py: expected 8 arc edges in %s, found %d" % (path, n))
+    with open(path, "w") as f:
+        f.write(new)
+
+
+def v_refined16(case):
+    v_refined(case)
+    wall_polygon(case)
+
+
 def v_seed2(case):
     # the insertion seed of the packing stage: a prime, as LIGGGHTS wants,
     # and not a seed of the particle template or distribution (32452843 was:
@@ -126,6 +167,7 @@ VARIANTS = [
     ("demStep10", "DEM step 1.25e-5 s (9.6 % t_R), couplingInterval 40", v_demStep10),
     ("divided", "void fraction divided, no smoothing", v_divided),
     ("refined", "CFD mesh refined once (8 x the cells)", v_refined),
+    ("refined16", "CFD mesh refined once inside the tutorial's 16-facet wall", v_refined16),
     ("seed2", "second packing seed", v_seed2),
     ("saffman", "Saffman lift without Mei's correction (the reference's)", v_saffman),
 ]

@@ -7,4 +7,5 @@
 add_test(NAME fluidizedBed.ci
     COMMAND ${TUT} fluidizedBed ${FOAMDEM_WORK}/fluidizedBed -ci)
 set_tests_properties(fluidizedBed.ci PROPERTIES
-    LABELS "integration;tutorial" TIMEOUT 900)
+    LABELS "integration;tutorial" TIMEOUT 900
+    FIXTURES_SETUP fluidizedBed_ci)

@@ -112,3 +112,24 @@ def dump_frames(path):
         else:
             i += 1
     return frames
+
+
+def later_segment_wins(rows, key):
+    """Rows (or dump frames) of a file that a continued run (./Allrun
+    -continue) appended to: where the key (time or step) goes back, the
+    later segment replaces the earlier one's rows from that key on."""
+    out = []
+    for r in rows:
+        while out and key(out[-1]) >= key(r):
+            out.pop()
+        out.append(r)
+    return out
+
+
+def function_object_segments(case, name, fname):
+    """Paths of postProcessing/<name>/<start time>/<fname>, a run's and its
+    continuations' (each starts a directory named by its start time), by
+    start time."""
+    import glob
+    paths = glob.glob(os.path.join(case, "postProcessing", name, "*", fname))
+    return sorted(paths, key=lambda p: float(os.path.basename(os.path.dirname(p))))

@@ -203,3 +203,28 @@ def intersect(a, b, level):
     if disc < 0:
         return float("nan")
     return (-a + math.sqrt(disc)) / (2.0 * b)
+
+
+def read_function_object_segments(case, name, fname):
+    """read_function_object_table of postProcessing/<name>/<start>/<fname>
+    over a run and its continuations (./Allrun -continue: each starts a
+    directory named by its start time), joined by time: a later segment
+    replaces the earlier rows from its first time on."""
+    from foamdem import caseio
+    paths = caseio.function_object_segments(case, name, fname)
+    if not paths:
+        raise ValueError("no %s in %s" % (fname, os.path.join(case, "postProcessing", name)))
+    out = read_function_object_table(paths[0])
+    for p in paths[1:]:
+        nxt = read_function_object_table(p)
+        if not len(nxt["Time"]):
+            continue
+        keep = np.asarray(out["Time"]) < nxt["Time"][0] - 1e-12
+        for k in out:
+            if k in nxt:
+                a = out[k]
+                if isinstance(a, list):
+                    out[k] = [x for x, y in zip(a, keep) if y] + list(nxt[k])
+                else:
+                    out[k] = np.concatenate([a[keep], nxt[k]])
+    return out

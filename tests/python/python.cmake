@@ -40,3 +40,10 @@ set_tests_properties(python.modelsDocumented PROPERTIES LABELS "integration;pyth
 add_test(NAME python.richardsonZaki
     COMMAND sh -c "\"\${FOAMDEM_PYTHON:-python3}\" ${CMAKE_CURRENT_LIST_DIR}/testRichardsonZaki.py")
 set_tests_properties(python.richardsonZaki PROPERTIES LABELS "unit;python" TIMEOUT 60)
+
+# The joins of a run and its continuations (./Allrun -continue) that the
+# tutorials' post-processing uses: an appended DEM history whose time goes
+# back at the restart, and postProcessing/<name>/<start time>/ segments
+add_test(NAME python.continuationSegments
+    COMMAND sh -c "\"\${FOAMDEM_PYTHON:-python3}\" ${CMAKE_CURRENT_LIST_DIR}/testContinuationSegments.py")
+set_tests_properties(python.continuationSegments PROPERTIES LABELS "unit;python" TIMEOUT 60)

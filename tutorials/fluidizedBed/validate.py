@@ -30,8 +30,8 @@ from foamdem import caseio, fluidbed  # noqa: E402
 
 
 def load_patch(case, name):
-    path = os.path.join(case, "postProcessing", name, "0", "surfaceFieldValue.dat")
-    return fluidbed.read_surface_field_value(path)
+    # (a continued run: each segment has its directory; joined by time)
+    return fluidbed.read_function_object_segments(case, name, "surfaceFieldValue.dat")
 
 
 def binned(u, y, edges):
@@ -92,13 +92,13 @@ def main():
     u_t = pin["areaAverage(U)"][:m, 2]
 
     # Particle side
-    bed = np.loadtxt(os.path.join(case, "DEM/post/bed.dat"))
+    bed = np.array(caseio.later_segment_wins(
+        np.loadtxt(os.path.join(case, "DEM/post/bed.dat"), ndmin=2), lambda r: r[0]))
     tb, nb, zmean = bed[:, 0], bed[:, 1], bed[:, 2]
     f_floor, f_side = bed[:, 5], bed[:, 6]
     n_min, n_max = int(nb.min()), int(nb.max())
 
-    vf = os.path.join(case, "postProcessing/voidfractionRange/0/fieldMinMax.dat")
-    vfr = fluidbed.read_function_object_table(vf)
+    vfr = fluidbed.read_function_object_segments(case, "voidfractionRange", "fieldMinMax.dat")
     eps_lo = float(vfr["min"].min())
     eps_hi = float(vfr["max"].max())
 

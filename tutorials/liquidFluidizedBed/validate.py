@@ -56,8 +56,10 @@ def read_stages(path):
 
 
 def read_frames(path):
-    """A multi-frame LIGGGHTS dump 'id z' -> list of (step, z array)."""
-    return [(step, cols[:, 1]) for step, cols in caseio.dump_frames(path)]
+    """A multi-frame LIGGGHTS dump 'id z' -> list of (step, z array); a
+    continued run's frames replace the earlier run's from their step on."""
+    return caseio.later_segment_wins(
+        [(step, cols[:, 1]) for step, cols in caseio.dump_frames(path)], lambda f: f[0])
 
 
 def law_voidage(law, u, d, rho, mu, rhop, g):
@@ -117,9 +119,11 @@ def main():
         sys.exit("validate.py: no frames in DEM/post/heights.dump")
     step0 = frames[0][0]
     t_f = np.array([(s - step0) * dt for s, _ in frames])
-    bed = np.loadtxt(os.path.join(case, "DEM/post/bed.dat"), comments="#", ndmin=2)
-    inlet = fluidbed.read_surface_field_value(
-        os.path.join(case, "postProcessing", "inlet", "0", "surfaceFieldValue.dat"))
+    bed = np.array(caseio.later_segment_wins(
+        np.loadtxt(os.path.join(case, "DEM/post/bed.dat"), comments="#", ndmin=2),
+        lambda r: r[0]))
+    # (a continued run: each segment has its directory; joined by time)
+    inlet = fluidbed.read_function_object_segments(case, "inlet", "surfaceFieldValue.dat")
     t_p = inlet["Time"]
     p_in = inlet["areaAverage(p)"]
     weight = n_p * vp * (rhop - rho) * g / area

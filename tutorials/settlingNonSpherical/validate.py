@@ -23,6 +23,7 @@ model is on.
 Writes results/summary.dat (and results/settling.png without --no-plot).
 """
 import argparse
+import glob
 import math
 import os
 import re
@@ -64,8 +65,10 @@ def cloud_values(path):
 
 
 def read_dump(path):
-    """Frames of a LIGGGHTS 'custom id x y z' dump: [(step, N x 3 array)]."""
-    return [(step, cols[:, 1:4]) for step, cols in caseio.dump_frames(path)]
+    """Frames of a LIGGGHTS 'custom id x y z' dump: [(step, N x 3 array)];
+    a continued run's frames replace the earlier run's from their step on."""
+    return caseio.later_segment_wins(
+        [(step, cols[:, 1:4]) for step, cols in caseio.dump_frames(path)], lambda f: f[0])
 
 
 def body_axes(xyz):
@@ -140,7 +143,11 @@ def main():
     g = float(np.linalg.norm(caseio.foam_vector(os.path.join(case, "constant/g"), "value")))
 
     # The body as the DEM and the coupling have it
-    log = open(os.path.join(case, "log.liggghts")).read()
+    # (a continued run: the insertion is in the first run's log, kept by
+    # Allrun -continue as log.liggghts.before_continue_<time>)
+    log = "".join(open(p).read() for p in
+                  sorted(glob.glob(os.path.join(case, "log.liggghts.before_continue_*")))
+                  + [os.path.join(case, "log.liggghts")])
     masses = re.findall(r"inserted (\d+) particle templates \(mass ([-+0-9.eE]+)\)", log)
     n_ins = sum(int(n) for n, _ in masses)
     m_body = float(masses[0][1])
@@ -156,7 +163,8 @@ def main():
 
     eps = min(caseio.scalar_field_values(os.path.join(case, last, "voidfraction")))
 
-    hist = np.loadtxt(os.path.join(case, "DEM/post/history.dat"))
+    hist = np.array(caseio.later_segment_wins(
+        np.loadtxt(os.path.join(case, "DEM/post/history.dat"), ndmin=2), lambda r: r[0]))
     t_dem, v_dem = hist[:, 0], -hist[:, 6]
     omega_max = float(np.max(np.abs(hist[:, 7:10])))
     lateral = float(np.max(np.hypot(hist[:, 4], hist[:, 5])))

@@ -1,0 +1,55 @@
+#!/usr/bin/python3
+"""Unit test of the joins the tutorials' post-processing applies to a run
+and its continuations (./Allrun -continue): caseio.later_segment_wins (a
+DEM print or dump file appended to, whose time goes back at the restart)
+and fluidbed.read_function_object_segments (postProcessing/<name>/<start>/
+of each segment). Synthetic files with the answers written down."""
+import os
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "python"))
+from foamdem import caseio, fluidbed  # noqa: E402
+
+fails = []
+
+
+def check(name, ok, detail=""):
+    print("%-70s %s  %s" % (name, "ok" if ok else "FAILED", detail))
+    if not ok:
+        fails.append(name)
+
+
+# A history written to 0.5, continued from 0.3 (rows 0.3 .. 0.6 again)
+rows = [(t / 10, 0) for t in range(6)] + [(t / 10, 1) for t in range(3, 7)]
+out = caseio.later_segment_wins(rows, lambda r: r[0])
+check("appended history: times increase, the continued rows from 0.3 on",
+      [r[0] for r in out] == [0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6]
+      and [r[1] for r in out] == [0, 0, 0, 1, 1, 1, 1], str(out))
+check("a file without a restart is unchanged",
+      caseio.later_segment_wins(rows[:6], lambda r: r[0]) == rows[:6])
+# Two continuations, the second from before the first's start
+rows2 = rows + [(0.2, 2), (0.3, 2)]
+out2 = caseio.later_segment_wins(rows2, lambda r: r[0])
+check("second continuation from an earlier time replaces both",
+      out2 == [(0, 0), (0.1, 0), (0.2, 2), (0.3, 2)], str(out2))
+
+# surfaceFieldValue segments: postProcessing/inlet/0 (to 0.5) and /0.3
+with tempfile.TemporaryDirectory() as case:
+    for start, tag, times in (("0", 1.0, [0.1, 0.2, 0.3, 0.4, 0.5]),
+                              ("0.3", 2.0, [0.4, 0.5, 0.6])):
+        d = os.path.join(case, "postProcessing", "inlet", start)
+        os.makedirs(d)
+        with open(os.path.join(d, "surfaceFieldValue.dat"), "w") as f:
+            f.write("# Region type : patch inlet\n# Time\tareaAverage(p)\tareaAverage(U)\n")
+            for t in times:
+                f.write("%g\t%g\t(0 0 %g)\n" % (t, tag * t, tag))
+    s = fluidbed.read_function_object_segments(case, "inlet", "surfaceFieldValue.dat")
+    check("function object: times joined by time",
+          list(s["Time"]) == [0.1, 0.2, 0.3, 0.4, 0.5, 0.6], str(list(s["Time"])))
+    check("function object: the continued segment's values from its first time",
+          list(s["areaAverage(p)"]) == [0.1, 0.2, 0.3, 0.8, 1.0, 1.2]
+          and list(s["areaAverage(U)"][:, 2]) == [1, 1, 1, 2, 2, 2], str(s["areaAverage(p)"]))
+
+print("FAILED: %d" % len(fails) if fails else "all passed")
+sys.exit(1 if fails else 0)

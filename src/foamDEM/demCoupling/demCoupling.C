@@ -663,12 +663,19 @@ Foam::foamDEM::demCoupling::demCoupling
     // Coupling terms for the first DEM interval. A DEM continued from the
     // library's restart holds the ones the writing run pushed at that time
     // (computed from the fluid of the step before it): they are kept, so
-    // that the continued run repeats the straight one
-    if (engine_->continued())
+    // that the continued run repeats the straight one. Bodies whose terms
+    // the restart does not carry get new ones, from this time's fields
+    if (engine_->continued() && engine_->restartHoldsCouplingTerms())
     {
         Info<< "    continued run: the DEM keeps the coupling terms of its"
             << " restart for the first interval" << endl;
         skipPush_ = true;
+    }
+    else if (engine_->continued())
+    {
+        Info<< "    continued run: the restart does not carry the bodies'"
+            << " coupling terms; new ones from the fields of the start time"
+            << " for the first interval" << endl;
     }
     update();
     skipPush_ = false;

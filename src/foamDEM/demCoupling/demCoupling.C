@@ -749,6 +749,7 @@ void Foam::foamDEM::demCoupling::writeDEMRestart()
         if (Pstream::master())
         {
             rm(oldest);
+            rm(oldest.lessExt() + ".step");
         }
     }
 }

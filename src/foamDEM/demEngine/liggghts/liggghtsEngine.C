@@ -3,6 +3,7 @@
 #include "addToRunTimeSelectionTable.H"
 #include "Pstream.H"
 #include "IFstream.H"
+#include "OFstream.H"
 #include "OSspecific.H"
 
 #include <mpi.h>
@@ -246,6 +247,42 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
     {
         contextGuard guard("reading the DEM script " + scriptFile_);
         lmp_->input->file(scriptFile_.c_str());
+    }
+
+    // A continued run's script must have read the restart it was offered:
+    // LIGGGHTS' step must be the one the restart was written at (the
+    // '.step' file writeRestart leaves beside it; restarts without one
+    // are not checked)
+    if (continued_)
+    {
+        const fileName restart(restartFile(runTime, runTime.timeName()));
+        const fileName stepFile(restart.lessExt() + ".step");
+        int64_t written = -1;
+        if (Pstream::master() && isFile(stepFile))
+        {
+            IFstream is(stepFile);
+            int64_t k = -1;
+            is >> k;
+            written = is.bad() ? -1 : k;
+        }
+        Pstream::scatter(written);
+        const int64_t now = lmp_->update->ntimestep;
+        if (written >= 0 && written != now)
+        {
+            FatalIOErrorInFunction(dict)
+                << "The DEM script " << scriptFile_.relative(caseDir)
+                << " (liggghtsCoeffs.script) did not continue from the DEM"
+                << " restart " << restart.relative(caseDir) << " it was"
+                << " offered: LIGGGHTS is at step " << now << ", the restart"
+                << " was written at step " << written << " (t = "
+                << runTime.timeName() << " s). A script that can be"
+                << " continued reads ${foamDEMRestart}: 'variable"
+                << " foamDEMRestart index <file of a fresh start>' then"
+                << " 'read_restart ${foamDEMRestart}' (the library defines"
+                << " foamDEMRestart and foamDEMContinued 1 first), and does"
+                << " not reset the step after it. Or start from startTime."
+                << exit(FatalIOError);
+        }
     }
 
     if (!lmp_->atom->radius_flag || !lmp_->atom->rmass_flag)
@@ -1095,4 +1132,11 @@ void Foam::foamDEM::liggghtsEngine::writeRestart(const fileName& file)
     copyHeld(true);
     mkDir(file.path());
     run("write_restart " + file, "writing the DEM restart " + file);
+
+    // Its step, for the check of a continued run (see the constructor)
+    if (Pstream::master())
+    {
+        OFstream os(file.lessExt() + ".step");
+        os  << int64_t(lmp_->update->ntimestep) << endl;
+    }
 }

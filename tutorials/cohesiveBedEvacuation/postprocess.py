@@ -47,26 +47,14 @@ def read_table(path):
     return rows
 
 
-def merge_segments(rows):
-    """Rows of a run and its continuations, in the order written: where a
-    continuation starts at a time t0 the earlier run may already have lines
-    at t >= t0 (written after its last write, before it stopped); the
-    continued run's lines replace them."""
-    out = []
-    for r in rows:
-        if out and r[0] <= out[-1][0]:
-            out = [q for q in out if q[0] < r[0]]
-        out.append(r)
-    return out
-
-
 def field_value(name):
     files = sorted(glob.glob("postProcessing/%s/*/surfaceFieldValue.dat" % name),
                    key=lambda f: float(f.split("/")[-2]))
     rows = []
     for f in files:
         rows.extend(read_table(f))
-    return merge_segments(rows)
+    # a continuation's lines replace the earlier run's from its start on
+    return caseio.later_segment_wins(rows, lambda r: r[0])
 
 
 def classify(P, x, y, z):
@@ -95,7 +83,8 @@ def main():
     end_time = caseio.foam_scalar("DEM/post/setupDict", "endTime")
     os.makedirs("results", exist_ok=True)
 
-    ev = merge_segments(read_table("DEM/post/evacuation.dat"))
+    ev = caseio.later_segment_wins(read_table("DEM/post/evacuation.dat"),
+                                   lambda r: r[0])
     # The bed: what the fill stage inserted (insert/pack may fall short of
     # nParticles when the region is too small for it), at the first line
     n0 = int(round(ev[0][1] + ev[0][3]))

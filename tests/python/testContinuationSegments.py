@@ -11,13 +11,8 @@ import tempfile
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "python"))
 from foamdem import caseio, fluidbed  # noqa: E402
 
-fails = []
-
-
-def check(name, ok, detail=""):
-    print("%-70s %s  %s" % (name, "ok" if ok else "FAILED", detail))
-    if not ok:
-        fails.append(name)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, finish  # noqa: E402
 
 
 # A history written to 0.5, continued from 0.3 (rows 0.3 .. 0.6 again)
@@ -51,5 +46,4 @@ with tempfile.TemporaryDirectory() as case:
           list(s["areaAverage(p)"]) == [0.1, 0.2, 0.3, 0.8, 1.0, 1.2]
           and list(s["areaAverage(U)"][:, 2]) == [1, 1, 1, 2, 2, 2], str(s["areaAverage(p)"]))
 
-print("FAILED: %d" % len(fails) if fails else "all passed")
-sys.exit(1 if fails else 0)
+finish()

@@ -12,13 +12,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "python")
 from foamdem import richardsonZaki as rz  # noqa: E402
 from foamdem import standardDrag as sd  # noqa: E402
 
-fails = []
-
-
-def check(name, ok, detail=""):
-    print("%-70s %s  %s" % (name, "ok" if ok else "FAILED", detail))
-    if not ok:
-        fails.append(name)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, finish  # noqa: E402
 
 
 # Garside & Al-Dibouni's equation as published, (5.1 - n)/(n - 2.7) =
@@ -78,7 +73,4 @@ check("interior voidage skips the bottom layer and the diffuse top: phi %.1f" % 
 check("mean-height voidage of a uniform bed",
       abs(rz.mean_height_voidage(0.01 + 0.05, 0.01, 100, 1e-6, 1e-2) - (1 - 100e-6 / (1e-2 * 0.1))) < 1e-12)
 
-if fails:
-    print("FAILED: %d check(s): %s" % (len(fails), ", ".join(fails)))
-    sys.exit(1)
-print("all checks passed")
+finish()

@@ -11,13 +11,8 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "python"))
 from foamdem import spouted  # noqa: E402
 
-fails = []
-
-
-def check(name, ok, detail):
-    print("%-60s %s  %s" % (name, "ok" if ok else "FAILED", detail))
-    if not ok:
-        fails.append(name)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, finish  # noqa: E402
 
 
 # Two plateaus; in each, the pressure is mean + a1 sin(2 pi f1 t) + a2
@@ -64,5 +59,4 @@ k = int(np.argmax(a[1:])) + 1
 check("spectrum peak of 2 sin(2 pi 25 t): %.4f at %.2f Hz" % (a[k], f[k]),
       abs(f[k] - 25) < 1e-9 and abs(a[k] - 2) < 1e-9, "")
 
-print("PASS" if not fails else "FAIL: %s" % ", ".join(fails))
-sys.exit(1 if fails else 0)
+finish()

@@ -9,13 +9,8 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "python"))
 from foamdem import standardDrag as sd  # noqa: E402
 
-fails = []
-
-
-def check(name, ok, detail=""):
-    print("%-66s %s  %s" % (name, "ok" if ok else "FAILED", detail))
-    if not ok:
-        fails.append(name)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, finish  # noqa: E402
 
 
 def close(a, b, tol):
@@ -66,5 +61,4 @@ re = rho * u * d / mu_small
 check("Brown & Lawler: Stokes limit at Re %.2g" % re,
       close(u * (1 + 0.150 * re ** 0.681), stokes, 1e-4), "U/U_Stokes = %.6f" % (u / stokes))
 
-print("PASS" if not fails else "FAIL: %s" % ", ".join(fails))
-sys.exit(1 if fails else 0)
+finish()

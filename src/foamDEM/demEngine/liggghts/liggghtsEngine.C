@@ -1133,6 +1133,16 @@ void Foam::foamDEM::liggghtsEngine::writeRestart(const fileName& file)
     mkDir(file.path());
     run("write_restart " + file, "writing the DEM restart " + file);
 
+    // write_restart re-initialises LIGGGHTS (System init: the neighbour
+    // settings among others). With multisphere bodies the next 'run ... pre
+    // no' then bins atoms with stale bin arrays: a segmentation fault in
+    // Neighbor::bin_atoms at np 2 (mixedBedNonSpherical). The next run
+    // sets up again.
+    if (multisphere_)
+    {
+        firstRun_ = true;
+    }
+
     // Its step, for the check of a continued run (see the constructor)
     if (Pstream::master())
     {

@@ -749,7 +749,7 @@ void Foam::foamDEM::demCoupling::writeDEMRestart()
         if (Pstream::master())
         {
             rm(oldest);
-            rm(oldest.lessExt() + ".step");
+            rm(demEngine::restartStepFile(oldest));
         }
     }
 }

@@ -256,7 +256,7 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
     if (continued_)
     {
         const fileName restart(restartFile(runTime, runTime.timeName()));
-        const fileName stepFile(restart.lessExt() + ".step");
+        const fileName stepFile(restartStepFile(restart));
         int64_t written = -1;
         if (Pstream::master() && isFile(stepFile))
         {
@@ -1146,7 +1146,7 @@ void Foam::foamDEM::liggghtsEngine::writeRestart(const fileName& file)
     // Its step, for the check of a continued run (see the constructor)
     if (Pstream::master())
     {
-        OFstream os(file.lessExt() + ".step");
+        OFstream os(restartStepFile(file));
         os  << int64_t(lmp_->update->ntimestep) << endl;
     }
 }

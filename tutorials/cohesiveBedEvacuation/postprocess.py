@@ -48,10 +48,8 @@ def read_table(path):
 
 
 def field_value(name):
-    files = sorted(glob.glob("postProcessing/%s/*/surfaceFieldValue.dat" % name),
-                   key=lambda f: float(f.split("/")[-2]))
     rows = []
-    for f in files:
+    for f in caseio.function_object_segments(".", name, "surfaceFieldValue.dat"):
         rows.extend(read_table(f))
     # a continuation's lines replace the earlier run's from its start on
     return caseio.later_segment_wins(rows, lambda r: r[0])

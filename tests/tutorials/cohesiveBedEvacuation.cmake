@@ -19,9 +19,10 @@ set_tests_properties(cohesiveBedEvacuation.ci PROPERTIES
 # deletion count carried through the restart) and the particle counts
 # follow the straight run's within 3 particles (2 measured)
 add_test(NAME continuation.cohesiveBedEvacuation
-    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkEvacuationContinuation
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkTutorialContinuation
             ${FOAMDEM_WORK}/cohesiveBedEvacuation
-            ${FOAMDEM_WORK}/cohesiveBedEvacuation_continue 0.03 3)
+            ${FOAMDEM_WORK}/cohesiveBedEvacuation_continue 0.03
+            --rows DEM/post/evacuation.dat:3:1,2,3,4,5 -- -ci)
 set_tests_properties(continuation.cohesiveBedEvacuation PROPERTIES
     LABELS "integration;tutorial" TIMEOUT 900
     FIXTURES_REQUIRED cohesiveBedEvacuation_ci)

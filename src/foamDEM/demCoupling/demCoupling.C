@@ -392,6 +392,7 @@ void Foam::foamDEM::demCoupling::stopWithLastGoodState(const string& message)
 {
     Time& runTime = const_cast<Time&>(mesh_.time());
     const scalar tFailed = runTime.value();
+    const scalar dt = runTime.deltaTValue();
     const fileName restart
     (
         runTime.globalPath()/"DEM/post/restart.atFailure_" + runTime.timeName()
@@ -402,14 +403,39 @@ void Foam::foamDEM::demCoupling::stopWithLastGoodState(const string& message)
     // first); the void fraction goes back to that step too. Written under
     // that step's time; the other coupling fields are not written.
     alpha_ == alpha_.oldTime();
-    runTime.setTime(tFailed - runTime.deltaTValue(), runTime.timeIndex() - 1);
+    runTime.setTime(tFailed - dt, runTime.timeIndex() - 1);
     U_.write();
     p_.write();
     alpha_.write();
 
+    // The particles of the same step: a failure in the particles at t is
+    // found before this step's copy (the newest is t - dt), a failure in
+    // the fluid after it (the older one is t - dt). The same on all ranks.
+    const scalar tGood = runTime.value();
+    const particleData* good = nullptr;
+    if (mag(goodNowTime_ - tGood) < 1e-6*dt) good = &goodNow_;
+    else if (mag(goodBeforeTime_ - tGood) < 1e-6*dt) good = &goodBefore_;
+    string particles;
+    if (good)
+    {
+        for (particleOutput& o : outputs_)
+        {
+            o.write(*good, plan_);
+        }
+        particles = " and the particles (particle outputs)";
+    }
+    else
+    {
+        particles =
+            keepLastGood_
+          ? " (no particles: the failed step was the run's first)"
+          : " (no particles: writeParticlesAtFailure is false)";
+    }
+
     FatalErrorInFunction
         << message.c_str() << nl
-        << "    The fluid fields of the last good step were written to time "
+        << "    The fluid fields" << particles.c_str()
+        << " of the last good step were written to time "
         << runTime.timeName() << "; the DEM state at the failure to "
         << restart << '.' << nl
         << "    Check the stability guard's report at start-up, and consider"
@@ -543,6 +569,9 @@ Foam::foamDEM::demCoupling::demCoupling
     logExchange_(dict_.getOrDefault("logExchange", false)),
     progress_(mesh_.time(), dict_),
     writeDEMRestart_(dict_.getOrDefault("writeDEMRestart", false)),
+    keepLastGood_(dict_.getOrDefault("writeParticlesAtFailure", true)),
+    goodNowTime_(-GREAT),
+    goodBeforeTime_(-GREAT),
     skipPush_(false)
 {
     Info<< nl << "foamDEM: CFD-DEM coupling, model type "
@@ -849,6 +878,16 @@ void Foam::foamDEM::demCoupling::update()
     if (checkMomentumBalance_)
     {
         reportMomentumBalance();
+    }
+    if (keepLastGood_)
+    {
+        // This step's particles for a stop in its fluid solution or in the
+        // next step's particles (stopWithLastGoodState)
+        scopedTimer timer(timers_.output);
+        std::swap(goodBefore_, goodNow_);
+        std::swap(goodBeforeTime_, goodNowTime_);
+        goodNow_.copyForOutput(particles_);
+        goodNowTime_ = mesh_.time().value();
     }
     if (mesh_.time().writeTime())
     {

@@ -1,7 +1,10 @@
 # NaN at run time, fluid side: the lid's velocity (a uniformFixedValue
 # table) jumps to 1e300 m/s at t = 0.02 s, so the fluid solution overflows.
 # The solver must stop non-zero naming U or p and the cell, write the
-# fluid fields of t = 0.019 s, and nothing NaN in 0.019.
+# fluid fields and the particles (cloud) of t = 0.019 s, nothing NaN in
+# 0.019, and the cloud's velocity that of the DEM's dump at step 1900, not
+# of step 2000 (checkFailureParticles.py: the particles of the same step as
+# the fluid fields, although the DEM had reached 0.02 s).
 setup()
 {
     timing 1e-5 100 0.05 10
@@ -45,5 +48,6 @@ END
 run_case()
 {
     expectFailure 60 \
-        "NaN/Inf in the fluid solution at t = 0.02 s: (U|p) in cell [0-9]+" 0.019
+        "NaN/Inf in the fluid solution at t = 0.02 s: (U|p) in cell [0-9]+" 0.019 \
+        && "$PY" "$here/checkFailureParticles.py" . 0.019 1900 2000
 }

@@ -63,6 +63,26 @@ def write_face_stl(path, name, x_top, x_bottom, y_top, y_bottom, half_width):
         f.write("endsolid %s\n" % name)
 
 
+def write_pipe_stl(path, R, n, xlo, xhi):
+    """The pipe wall as an n-sided prism along x from xlo to xhi, corners
+    at y = R cos(t), z = R sin(t) for t = k 360/n degrees (the CFD mesh's
+    wall points for n = 16), two triangles per facet."""
+    ring = [(R * math.cos(2 * math.pi * k / n), R * math.sin(2 * math.pi * k / n))
+            for k in range(n)]
+    with open(path, "w") as f:
+        f.write("solid pipeWall\n")
+        for k in range(n):
+            (y0, z0), (y1, z1) = ring[k], ring[(k + 1) % n]
+            a, b = (xlo, y0, z0), (xhi, y0, z0)
+            c, d = (xhi, y1, z1), (xlo, y1, z1)
+            for tri in ((a, b, c), (a, c, d)):
+                f.write("  facet normal 0 0 0\n    outer loop\n")
+                for v in tri:
+                    f.write("      vertex %.12g %.12g %.12g\n" % v)
+                f.write("    endloop\n  endfacet\n")
+        f.write("endsolid pipeWall\n")
+
+
 def latest_restart(case, dt_dem):
     """(time name, DEM step, restart file) of the latest write with a DEM
     restart: the library's (DEM/restart/<time>.restart, which also holds
@@ -128,6 +148,11 @@ def main():
     vp = math.pi / 6 * par["dp"] ** 3
     s = math.radians(angle)
 
+    facets = int(par.get("pipeWallFacets", 0))
+    if facets != 0 and facets < 8:
+        sys.exit("prepare.py: pipeWallFacets must be 0 (the exact cylinder) or"
+                 " at least 8, got %d" % facets)
+
     # Particle-wall pair coefficients: the harmonic mean of the particle's
     # and the wall's value (the reference's DEM), or the wall's own value
     def pair(a, b):
@@ -138,6 +163,10 @@ def main():
         "wallPairRestitution": pair(par["restitution"], par["wallRestitution"]),
         "wallPairRolling": pair(par["rollingFriction"], par["wallRolling"]),
         "pipeRadius": R,
+        "pipeWallFacets": facets,
+        # the packing's fill region: inside the wall (the inscribed circle
+        # of a faceted wall)
+        "fillRadius": R * math.cos(math.pi / facets) if facets else R,
         "xlo": -L / 2, "xhi": L / 2,
         "boxLo": -(R + 0.002), "boxHi": R + 0.002,
         "frontX": core / 2, "frontNx": -math.sin(s), "frontNy": -math.cos(s),
@@ -185,6 +214,9 @@ def main():
         f.write("variable %-14s equal %d\n" % ("procZ", grid[2]))
         f.write("variable %-14s string %s\n" % ("restartFile", restart))
         f.write("variable %-14s string %s\n" % ("segment", segment))
+
+    if facets:
+        write_pipe_stl(os.path.join(post, "pipeWall.stl"), R, facets, -L / 2, L / 2)
 
     # Temporary walls along the two faces, from the pipe top down to the
     # layer, for the fill of the packing stage

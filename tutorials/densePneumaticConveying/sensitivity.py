@@ -44,6 +44,17 @@ or one that foamDEM makes differently):
                 particle count and fill method)
   saffman       Saffman's lift without Mei's correction (the reference's
                 lift; the tutorial uses Saffman-Mei)
+  facetedWall   the DEM's pipe wall is the CFD mesh's 16-facet polygon
+                (pipeWallFacets 16), as the reference's DEM wall was its
+                mesh's boundary, instead of the exact cylinder
+  tangentialDampingOff
+                no tangential damping in LIGGGHTS' Hertz-Mindlin contact
+                (tangential_damping off, particle-particle and wall, packing
+                and coupled run). LIGGGHTS adds the tangential damping to a
+                sticking contact's spring force, so that force can exceed
+                mu |F_n|; the reference's DEM caps spring plus damping at
+                mu |F_n|. Without the damping the force never exceeds the
+                cap: a bound on that difference
 
 Writes results/sensitivity/sensitivity.dat (one line per variant and
 quantity: variant, quantity, foamDEM with the reference's measures, with
@@ -161,6 +172,20 @@ def v_saffman(case):
         f.write("\nsaffmanMeiLiftCoeffs { correction none; }\n")
 
 
+def v_facetedWall(case):
+    parameter(case, "pipeWallFacets", 16)
+
+
+def v_tangentialDampingOff(case):
+    # the keyword after the models of pair_style, at the end of a fix
+    # wall/gran (LIGGGHTS wants it after the wall's arguments)
+    sed(os.path.join(case, "DEM/contacts"), r"^(pair_style\s+gran .*)$",
+        r"\g<1> tangential_damping off")
+    for f in ("DEM/contacts", "DEM/in.pack"):
+        sed(os.path.join(case, f), r"(fix\s+\S+\s+all\s+wall/gran [^\"\n]*?)(\s*)(\"|$)",
+            r"\g<1> tangential_damping off\g<2>\g<3>", count=0)
+
+
 VARIANTS = [
     ("likeForLike", "the tutorial: wall friction 0.343 (harmonic mean)", None),
     ("friction04", "particle-wall friction 0.4 (the wall's own value)", v_friction04),
@@ -170,6 +195,8 @@ VARIANTS = [
     ("refined16", "CFD mesh refined once inside the tutorial's 16-facet wall", v_refined16),
     ("seed2", "second packing seed", v_seed2),
     ("saffman", "Saffman lift without Mei's correction (the reference's)", v_saffman),
+    ("facetedWall", "DEM pipe wall: the CFD mesh's 16-facet polygon (the reference's DEM wall)", v_facetedWall),
+    ("tangentialDampingOff", "no tangential damping in the Hertz-Mindlin contacts (bounds the reference's capped damping)", v_tangentialDampingOff),
 ]
 
 

@@ -62,26 +62,23 @@ set_tests_properties(parallel.settlingNonSpherical.migratingBody PROPERTIES
 # (settlingNonSpherical.rod.free) without its writes after 0.1 s,
 # continued by ./Allrun -ci -shape rod -orientation free -tilt 45
 # -continue (the fields and DEM/restart/0.1.restart: fix multisphere's
-# body state; validate.py over the appended history and sphere dump,
-# which must pass), agrees with the run straight through at 0.25 s: the
-# body's position and velocity and the fluid velocity to 1e-7 of their
-# largest values (measured 2.7e-9, 1.8e-15, 7.5e-11; the files have 8
-# digits), and every number of results/summary.dat to 1e-3 relative
-# (measured 2.1e-4; historyMaxError 0.05875 in both). The body's held
-# coupling force and torque (fix multisphere's dragforce_cm, hdtorque_cm)
-# are not in the DEM restart, so the continued run pushes new ones from
-# the fields of 0.1 s for its first interval (demEngine::
-# restartHoldsCouplingTerms): vz 0.114391 against 0.114342 m/s at
-# 0.10099 s. Seen failing with the first push skipped for bodies too (the
-# body then falls freely for one CFD step: vz 0.1241 at 0.10099 s,
-# positions 5.2e-7, historyMaxError 0.110), and with DEM/in.liggghts
-# ignoring foamDEMRestart (a new body inserted at the continued run's
-# start)
+# body state, and the body's held coupling force and torque, which each
+# sphere carries in the restart: liggghtsEngine::copyBodyTerms; validate.py
+# over the appended history and sphere dump, which must pass), agrees with
+# the run straight through at 0.25 s: the body's position and velocity and
+# the fluid velocity to 1e-12 of their largest values, and every number of
+# results/summary.dat to 1e-3 relative. Measured 2026-12-04: 0, 1.6e-15,
+# 3.3e-15; summary identical. Seen failing (1e-12) with the body's terms
+# recomputed from the fields of 0.1 s (the behaviour before copyBodyTerms:
+# positions 2.7e-9; vz 0.114391 against 0.114342 m/s at 0.10099 s), with
+# no push at all for the first interval (positions 5.2e-7,
+# historyMaxError 0.110), and with DEM/in.liggghts ignoring
+# foamDEMRestart (a new body inserted at the continued run's start)
 set(CONTINUATION_TUT ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkTutorialContinuation)
 add_test(NAME continuation.settlingNonSpherical
     COMMAND ${CONTINUATION_TUT} ${FOAMDEM_WORK}/settlingNonSpherical_rod_free
             ${FOAMDEM_WORK}/continuation_settlingNonSpherical 0.1
-            --field 0.25:lagrangian/particles/positions,lagrangian/particles/U,U:1e-7
+            --field 0.25:lagrangian/particles/positions,lagrangian/particles/U,U:1e-12
             --summary results/summary.dat:1e-3
             -- -ci -shape rod -orientation free -tilt 45)
 set_tests_properties(continuation.settlingNonSpherical PROPERTIES

@@ -17,6 +17,7 @@ bottom cell layer at every write) and fluidisation:
     estimated from 12 block means and reported.
 Writes results/summary.dat; exits 1 if a check fails."""
 import argparse
+import glob
 import os
 import re
 import sys
@@ -62,11 +63,17 @@ def main():
     text = caseio._strip_comments(open(cp).read())
     alpha_min = float(re.search(r"alphaMin\s+([-+0-9.eE]+)", text).group(1))
 
-    log = open(os.path.join(case, "log.liggghts")).read()
+    # the insertion is in the first run's LIGGGHTS log (./Allrun -continue
+    # keeps it as log.liggghts.before_continue_<t>)
+    logs = sorted(glob.glob(os.path.join(case, "log.liggghts.before_continue_*")),
+                  key=lambda p: float(p.rsplit("_", 1)[1]))
+    log = "".join(open(p).read() for p in logs + [os.path.join(case, "log.liggghts")])
     ins = re.findall(r"a total of (\d+) particle templates \(mass ([-+0-9.eE]+)\)", log)
     n_bodies, m_inserted = int(ins[-1][0]), float(ins[-1][1])
 
-    bed = np.loadtxt(os.path.join(case, "DEM/post/bed.dat"))
+    # rows of a continued run replace the earlier ones from its start
+    bed = np.loadtxt(os.path.join(case, "DEM/post/bed.dat"), ndmin=2)
+    bed = np.array(caseio.later_segment_wins(list(bed), key=lambda r: r[0]))
     t, nsph, mass, zmean = bed[:, 0], bed[:, 1], bed[:, 2], bed[:, 3]
     checks.append(("DEM history finite", bool(np.all(np.isfinite(bed)))))
     checks.append(("sphere count constant", bool(np.all(nsph == nsph[0]))))
@@ -114,8 +121,11 @@ def main():
     rhop = float(re.search(r"variable\s+rhop\s+equal\s+([-+0-9.eE]+)",
                            open(os.path.join(case, "DEM/in.liggghts")).read()).group(1))
     g = float(np.linalg.norm(caseio.foam_vector(os.path.join(case, "constant/g"), "value")))
-    pdat = np.loadtxt(os.path.join(case, "postProcessing/inletPressure/0/surfaceFieldValue.dat"),
-                      comments="#")
+    pdat = np.array(caseio.later_segment_wins(
+        [r for path in caseio.function_object_segments(case, "inletPressure",
+                                                        "surfaceFieldValue.dat")
+         for r in np.loadtxt(path, comments="#", ndmin=2)],
+        key=lambda r: r[0]))
     tw = (pdat[:, 0] >= w0) & (pdat[:, 0] <= w1)
     area = 0.015 * 0.015
     w_area = mass[0] * g * (1 - rho / rhop) / area

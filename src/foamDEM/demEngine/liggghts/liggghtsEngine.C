@@ -135,7 +135,8 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
     multisphere_(nullptr),
     integrates_(false),
     warnedSphereTorque_(false),
-    shapedSpheres_(false)
+    shapedSpheres_(false),
+    bodyTermsRestored_(false)
 {
     const dictionary& dict = couplingDict.optionalSubDict(typeName + "Coeffs");
 
@@ -432,6 +433,29 @@ void Foam::foamDEM::liggghtsEngine::prepare(const exchangePlan& plan)
             " vector yes no no 0 0 0",
             "adding the held torque"
         );
+        if (multisphere_)
+        {
+            // Each sphere carries its body's held coupling terms (fix
+            // multisphere keeps them per body, outside the restart)
+            run
+            (
+                "fix foamDEM_bodyForce all property/atom foamDEMBodyForce"
+                " vector yes no no 0 0 0",
+                "adding the bodies' held force"
+            );
+            run
+            (
+                "fix foamDEM_bodyTorque all property/atom foamDEMBodyTorque"
+                " vector yes no no 0 0 0",
+                "adding the bodies' held torque"
+            );
+            run
+            (
+                "fix foamDEM_bodySet all property/atom foamDEMBodySet"
+                " scalar yes no no 0",
+                "adding the bodies' held-terms flag"
+            );
+        }
     }
 
     // Set the DEM up now (neighbour lists, fix gravity), so that errors
@@ -443,9 +467,20 @@ void Foam::foamDEM::liggghtsEngine::prepare(const exchangePlan& plan)
         // Back to the forces and torques of the restart's time; the first
         // interval continues without a new set-up
         copyHeld(false);
-        firstRun_ = false;
+        // Without bodies the first interval continues without a new
+        // set-up, as the straight run does; with bodies the straight run
+        // set up again after writing the restart (writeRestart), and so
+        // does this one
+        firstRun_ = bool(multisphere_);
         Info<< "    LIGGGHTS: continued run: the first step starts from the"
-            << " forces and torques held at the restart's time" << endl;
+            << " forces and torques held at the restart's time";
+        if (multisphere_)
+        {
+            Info<< "; the bodies' held coupling terms "
+                << (bodyTermsRestored_ ? "from the restart" : "recomputed"
+                    " (the restart does not hold them)");
+        }
+        Info<< endl;
     }
 
     // What exists, per atom, for the coupling (asked of LIGGGHTS, not
@@ -1107,6 +1142,7 @@ void Foam::foamDEM::liggghtsEngine::copyHeld(bool toRestart)
     double** heldF = vectorProperty("foamDEMHeldForce");
     double** heldT = vectorProperty("foamDEMHeldTorque");
     LAMMPS_NS::Atom& atom = *lmp_->atom;
+    if (multisphere_) copyBodyTerms(toRestart);
     if (!heldF || !heldT || !atom.f || !atom.torque) return;
     for (int i = 0; i < atom.nlocal; ++i)
     {
@@ -1124,6 +1160,60 @@ void Foam::foamDEM::liggghtsEngine::copyHeld(bool toRestart)
             }
         }
     }
+}
+
+
+void Foam::foamDEM::liggghtsEngine::copyBodyTerms(bool toRestart)
+{
+    double** sphereF = vectorProperty("foamDEMBodyForce");
+    double** sphereT = vectorProperty("foamDEMBodyTorque");
+    double* set = scalarProperty("foamDEMBodySet");
+    LAMMPS_NS::Multisphere& ms = multisphere_->data();
+    double** fBody = ms.extract_double_vector("dragforce_cm");
+    double** tBody = ms.extract_double_vector("hdtorque_cm");
+    if (!sphereF || !sphereT || !set || !fBody || !tBody) return;
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+
+    if (toRestart)
+    {
+        // Every sphere of a body held on this rank gets the body's terms
+        for (int i = 0; i < atom.nlocal; ++i)
+        {
+            const int tag = multisphere_->belongs_to(i);
+            const int b = tag >= 0 ? ms.map(tag) : -1;
+            set[i] = b >= 0 ? 1 : 0;
+            for (int k = 0; k < 3; ++k)
+            {
+                sphereF[i][k] = b >= 0 ? fBody[b][k] : 0;
+                sphereT[i][k] = b >= 0 ? tBody[b][k] : 0;
+            }
+        }
+        return;
+    }
+
+    // Each body on this rank from one of its local spheres (the
+    // properties are not sent to ghosts: a body none of whose spheres is
+    // on its own rank keeps recomputed terms, and the log says so)
+    const label nB = ms.n_body();
+    List<bool> done(nB, false);
+    for (int i = 0; i < atom.nlocal; ++i)
+    {
+        const int tag = multisphere_->belongs_to(i);
+        const int b = tag >= 0 ? ms.map(tag) : -1;
+        if (b < 0 || done[b] || set[i] != 1) continue;
+        for (int k = 0; k < 3; ++k)
+        {
+            fBody[b][k] = sphereF[i][k];
+            tBody[b][k] = sphereT[i][k];
+        }
+        done[b] = true;
+    }
+    label missing = 0;
+    forAll(done, b)
+    {
+        if (!done[b]) ++missing;
+    }
+    bodyTermsRestored_ = returnReduce(missing, sumOp<label>()) == 0;
 }
 
 

@@ -47,3 +47,12 @@ set_tests_properties(python.richardsonZaki PROPERTIES LABELS "unit;python" TIMEO
 add_test(NAME python.continuationSegments
     COMMAND sh -c "\"\${FOAMDEM_PYTHON:-python3}\" ${CMAKE_CURRENT_LIST_DIR}/testContinuationSegments.py")
 set_tests_properties(python.continuationSegments PROPERTIES LABELS "unit;python" TIMEOUT 60)
+
+# bin/foamDEMArchiveRun on a synthetic decomposed case: the archive holds
+# time 0 and the latest write of every processor, the solver's DEM restart
+# and step file of that time only, the first and newest dump, the two
+# newest script restarts and the logs, and unpacks to the same files
+# (fails with every DEM/restart/<time>.restart packed)
+add_test(NAME python.archiveRun
+    COMMAND sh -c "\"\${FOAMDEM_PYTHON:-python3}\" ${CMAKE_CURRENT_LIST_DIR}/testArchiveRun.py")
+set_tests_properties(python.archiveRun PROPERTIES LABELS "unit;python" TIMEOUT 60)

@@ -1,0 +1,58 @@
+#!/usr/bin/python3
+"""Unit test of bin/foamDEMArchiveRun pack/unpack on a synthetic decomposed
+case: what a continuation needs is in the archive and nothing else (time
+directories 0 and the latest in every processor, the solver's DEM restart
+and step file of the latest time only, the first and the newest dump, the
+two newest script restarts, the logs), and unpack gives it back."""
+import os
+import subprocess
+import sys
+import tarfile
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, finish  # noqa: E402
+
+tool = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "bin",
+                    "foamDEMArchiveRun")
+tmp = tempfile.mkdtemp()
+case = os.path.join(tmp, "case")
+files = ["system/controlDict", "log.pisoDEMFoam", "log.pisoDEMFoam.continue_0.5"]
+for p in ("processor0", "processor1"):
+    for t in ("0", "0.5", "1", "1.5"):
+        files.append("%s/%s/U" % (p, t))
+files.append("processor1/2/U")                # only on one processor: not a write
+for t in ("0.5", "1", "1.5", "2"):
+    files += ["DEM/restart/%s.restart" % t, "DEM/restart/%s.step" % t]
+for s in (100, 200, 300):
+    files += ["DEM/post/restart/rebuild.%d.restart" % s, "DEM/post/dump/snap.%d.txt" % s]
+files += ["results/summary.dat", "VTK/x.vtk"]
+for f in files:
+    os.makedirs(os.path.dirname(os.path.join(case, f)), exist_ok=True)
+    open(os.path.join(case, f), "w").write(f)
+
+archive = os.path.join(tmp, "run.tar.xz")
+r = subprocess.run([sys.executable, tool, "pack", case, archive],
+                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+print(r.stdout.strip())
+check("pack exits 0", r.returncode == 0)
+with tarfile.open(archive) as tar:
+    names = set(tar.getnames())
+want = {"system/controlDict", "log.pisoDEMFoam", "log.pisoDEMFoam.continue_0.5",
+        "processor0/0/U", "processor1/0/U", "processor0/1.5/U", "processor1/1.5/U",
+        "DEM/restart/1.5.restart", "DEM/restart/1.5.step",
+        "DEM/post/restart/rebuild.200.restart", "DEM/post/restart/rebuild.300.restart",
+        "DEM/post/dump/snap.100.txt", "DEM/post/dump/snap.300.txt"}
+check("the archive holds what a continuation needs", want <= names, str(sorted(want - names)))
+unwanted = {"processor0/1/U", "processor1/2/U", "DEM/restart/1.restart",
+            "DEM/restart/2.restart", "DEM/restart/1.step", "DEM/post/dump/snap.200.txt",
+            "DEM/post/restart/rebuild.100.restart", "results/summary.dat", "VTK/x.vtk"}
+check("and not the older writes, restarts and dumps", not (unwanted & names),
+      str(sorted(unwanted & names)))
+out = os.path.join(tmp, "unpacked")
+r = subprocess.run([sys.executable, tool, "unpack", archive, out],
+                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+print(r.stdout.strip())
+check("unpack gives the files back",
+      r.returncode == 0 and all(open(os.path.join(out, f)).read() == f for f in want))
+finish()

@@ -63,12 +63,12 @@ def write_face_stl(path, name, x_top, x_bottom, y_top, y_bottom, half_width):
         f.write("endsolid %s\n" % name)
 
 
-def write_pipe_stl(path, R, n, xlo, xhi):
+def write_pipe_stl(path, R, n, xlo, xhi, turn=0.0):
     """The pipe wall as an n-sided prism along x from xlo to xhi, corners
-    at y = R cos(t), z = R sin(t) for t = k 360/n degrees (the CFD mesh's
-    wall points for n = 16), two triangles per facet."""
-    ring = [(R * math.cos(2 * math.pi * k / n), R * math.sin(2 * math.pi * k / n))
-            for k in range(n)]
+    at y = R cos(t), z = R sin(t) for t = (k + turn) 360/n degrees (the CFD
+    mesh's wall points for n = 16 and turn 0), two triangles per facet."""
+    ring = [(R * math.cos(2 * math.pi * (k + turn) / n),
+             R * math.sin(2 * math.pi * (k + turn) / n)) for k in range(n)]
     with open(path, "w") as f:
         f.write("solid pipeWall\n")
         for k in range(n):
@@ -216,7 +216,8 @@ def main():
         f.write("variable %-14s string %s\n" % ("segment", segment))
 
     if facets:
-        write_pipe_stl(os.path.join(post, "pipeWall.stl"), R, facets, -L / 2, L / 2)
+        write_pipe_stl(os.path.join(post, "pipeWall.stl"), R, facets, -L / 2, L / 2,
+                       0.5 if par.get("pipeWallFlatBottom", 0) else 0.0)
 
     # Temporary walls along the two faces, from the pipe top down to the
     # layer, for the fill of the packing stage

@@ -47,6 +47,10 @@ or one that foamDEM makes differently):
   facetedWall   the DEM's pipe wall is the CFD mesh's 16-facet polygon
                 (pipeWallFacets 16), as the reference's DEM wall was its
                 mesh's boundary, instead of the exact cylinder
+  facetedWallFlatBottom
+                facetedWall turned by half a facet: a facet at the bottom
+                instead of a corner (the reference's orientation is not
+                known)
   tangentialDampingOff
                 no tangential damping in LIGGGHTS' Hertz-Mindlin contact
                 (tangential_damping off, particle-particle and wall, packing
@@ -176,6 +180,11 @@ def v_facetedWall(case):
     parameter(case, "pipeWallFacets", 16)
 
 
+def v_facetedWallFlatBottom(case):
+    v_facetedWall(case)
+    parameter(case, "pipeWallFlatBottom", 1)
+
+
 def v_tangentialDampingOff(case):
     # the keyword after the models of pair_style, at the end of a fix
     # wall/gran (LIGGGHTS wants it after the wall's arguments)
@@ -196,6 +205,7 @@ VARIANTS = [
     ("seed2", "second packing seed", v_seed2),
     ("saffman", "Saffman lift without Mei's correction (the reference's)", v_saffman),
     ("facetedWall", "DEM pipe wall: the CFD mesh's 16-facet polygon (the reference's DEM wall)", v_facetedWall),
+    ("facetedWallFlatBottom", "the faceted DEM wall turned by half a facet: a facet at the bottom", v_facetedWallFlatBottom),
     ("tangentialDampingOff", "no tangential damping in the Hertz-Mindlin contacts (bounds the reference's capped damping)", v_tangentialDampingOff),
 ]
 

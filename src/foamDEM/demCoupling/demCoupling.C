@@ -568,7 +568,7 @@ Foam::foamDEM::demCoupling::demCoupling
     reportedArrays_(false),
     logExchange_(dict_.getOrDefault("logExchange", false)),
     progress_(mesh_.time(), dict_),
-    writeDEMRestart_(dict_.getOrDefault("writeDEMRestart", true)),
+    writeDEMRestart_(dict_.getOrDefault("writeDEMRestart", false)),
     keepLastGood_(dict_.getOrDefault("writeParticlesAtFailure", true)),
     goodNowTime_(-GREAT),
     goodBeforeTime_(-GREAT),

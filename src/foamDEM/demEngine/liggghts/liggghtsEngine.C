@@ -153,7 +153,7 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
     }
     implicitDrag_ = (dragIntegration == "implicit");
     shapedSpheres_ = dict.getOrDefault<bool>("shapedSpheres", false);
-    keepHeld_ = couplingDict.getOrDefault<bool>("writeDEMRestart", true);
+    keepHeld_ = couplingDict.getOrDefault<bool>("writeDEMRestart", false);
 
     // Paths are relative to the (undecomposed) case directory
     const fileName caseDir(runTime.globalPath());
@@ -414,35 +414,48 @@ void Foam::foamDEM::liggghtsEngine::prepare(const exchangePlan& plan)
         run(cmd, "adding the coupling force fix");
     }
 
-    // A body's held coupling terms (fix multisphere's dragforce_cm,
-    // hdtorque_cm) are not in LIGGGHTS' restart: each sphere carries its
-    // body's in the restart (copyBodyTerms), when demCoupling writes
-    // restarts (writeDEMRestart) or this run continued from one. A free
-    // sphere's are in the coupling fixes' own restart data. Forces need
-    // not be kept: the run after a restart write, and a continued run's
-    // first, set up again (writeRestart)
-    if ((keepHeld_ || continued_) && multisphere_)
+    // The per-atom force and torque the DEM holds between two runs, kept
+    // in the restarts (writeRestart): a continued run starts its first
+    // step from them, as the run that wrote the restart did (the set-up
+    // of a run recomputes them, with the coupling terms of the new
+    // interval instead of the old ones)
+    if (keepHeld_ || continued_)
     {
-        // Each sphere carries its body's held coupling terms (fix
-        // multisphere keeps them per body, outside the restart)
         run
         (
-            "fix foamDEM_bodyForce all property/atom foamDEMBodyForce"
+            "fix foamDEM_heldForce all property/atom foamDEMHeldForce vector"
+            " yes no no 0 0 0",
+            "adding the held force"
+        );
+        run
+        (
+            "fix foamDEM_heldTorque all property/atom foamDEMHeldTorque"
             " vector yes no no 0 0 0",
-            "adding the bodies' held force"
+            "adding the held torque"
         );
-        run
-        (
-            "fix foamDEM_bodyTorque all property/atom foamDEMBodyTorque"
-            " vector yes no no 0 0 0",
-            "adding the bodies' held torque"
-        );
-        run
-        (
-            "fix foamDEM_bodySet all property/atom foamDEMBodySet"
-            " scalar yes no no 0",
-            "adding the bodies' held-terms flag"
-        );
+        if (multisphere_)
+        {
+            // Each sphere carries its body's held coupling terms (fix
+            // multisphere keeps them per body, outside the restart)
+            run
+            (
+                "fix foamDEM_bodyForce all property/atom foamDEMBodyForce"
+                " vector yes no no 0 0 0",
+                "adding the bodies' held force"
+            );
+            run
+            (
+                "fix foamDEM_bodyTorque all property/atom foamDEMBodyTorque"
+                " vector yes no no 0 0 0",
+                "adding the bodies' held torque"
+            );
+            run
+            (
+                "fix foamDEM_bodySet all property/atom foamDEMBodySet"
+                " scalar yes no no 0",
+                "adding the bodies' held-terms flag"
+            );
+        }
     }
 
     // Set the DEM up now (neighbour lists, fix gravity), so that errors
@@ -451,14 +464,16 @@ void Foam::foamDEM::liggghtsEngine::prepare(const exchangePlan& plan)
 
     if (continued_)
     {
-        // The bodies' held coupling terms back from the restart (the
-        // spheres' are in the coupling fixes' restart data). The straight
-        // run set up again after writing the restart (writeRestart), and so
-        // does this one before its first interval
-        if (multisphere_) copyBodyTerms(false);
-        firstRun_ = true;
-        Info<< "    LIGGGHTS: continued run: set up again before the first"
-            << " interval, as the run that wrote the restart did";
+        // Back to the forces and torques of the restart's time; the first
+        // interval continues without a new set-up
+        copyHeld(false);
+        // Without bodies the first interval continues without a new
+        // set-up, as the straight run does; with bodies the straight run
+        // set up again after writing the restart (writeRestart), and so
+        // does this one
+        firstRun_ = bool(multisphere_);
+        Info<< "    LIGGGHTS: continued run: the first step starts from the"
+            << " forces and torques held at the restart's time";
         if (multisphere_)
         {
             Info<< "; the bodies' held coupling terms "
@@ -1122,6 +1137,32 @@ Foam::labelList Foam::foamDEM::liggghtsEngine::particleTypes() const
 }
 
 
+void Foam::foamDEM::liggghtsEngine::copyHeld(bool toRestart)
+{
+    double** heldF = vectorProperty("foamDEMHeldForce");
+    double** heldT = vectorProperty("foamDEMHeldTorque");
+    LAMMPS_NS::Atom& atom = *lmp_->atom;
+    if (multisphere_) copyBodyTerms(toRestart);
+    if (!heldF || !heldT || !atom.f || !atom.torque) return;
+    for (int i = 0; i < atom.nlocal; ++i)
+    {
+        for (int k = 0; k < 3; ++k)
+        {
+            if (toRestart)
+            {
+                heldF[i][k] = atom.f[i][k];
+                heldT[i][k] = atom.torque[i][k];
+            }
+            else
+            {
+                atom.f[i][k] = heldF[i][k];
+                atom.torque[i][k] = heldT[i][k];
+            }
+        }
+    }
+}
+
+
 void Foam::foamDEM::liggghtsEngine::copyBodyTerms(bool toRestart)
 {
     double** sphereF = vectorProperty("foamDEMBodyForce");
@@ -1178,18 +1219,19 @@ void Foam::foamDEM::liggghtsEngine::copyBodyTerms(bool toRestart)
 
 void Foam::foamDEM::liggghtsEngine::writeRestart(const fileName& file)
 {
-    if (multisphere_) copyBodyTerms(true);
+    copyHeld(true);
     mkDir(file.path());
     run("write_restart " + file, "writing the DEM restart " + file);
 
     // write_restart re-initialises LIGGGHTS (System init: the neighbour
-    // settings among others), and a following 'run ... pre no' works with
-    // stale arrays: with multisphere bodies a segmentation fault in
-    // Neighbor::bin_atoms at np 2 (mixedBedNonSpherical); with spheres a
-    // neighbour-list overflow became a segmentation fault instead of
-    // LIGGGHTS' error (stability.oneRankError with writeDEMRestart). The
-    // next run sets up again (a continued run does the same, prepare)
-    firstRun_ = true;
+    // settings among others). With multisphere bodies the next 'run ... pre
+    // no' then bins atoms with stale bin arrays: a segmentation fault in
+    // Neighbor::bin_atoms at np 2 (mixedBedNonSpherical). The next run
+    // sets up again.
+    if (multisphere_)
+    {
+        firstRun_ = true;
+    }
 
     // Its step, for the check of a continued run (see the constructor)
     if (Pstream::master())

@@ -17,6 +17,10 @@ import os
 import re
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                "python"))
+from foamdem import caseio  # noqa: E402
+
 NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|nan|inf", re.I)
 
 
@@ -41,31 +45,10 @@ def cloud(case, time):
 
 
 def dump_frames(path):
-    """{step: {id: (vx, vy, vz)}} of a LIGGGHTS custom dump with columns
-    id x y z vx vy vz ..."""
-    frames, step, lines = {}, None, []
-    with open(path) as f:
-        lines = f.read().splitlines()
-    i = 0
-    while i < len(lines):
-        if lines[i].startswith("ITEM: TIMESTEP"):
-            step = int(lines[i + 1])
-            i += 2
-        elif lines[i].startswith("ITEM: NUMBER OF ATOMS"):
-            n = int(lines[i + 1])
-            i += 2
-        elif lines[i].startswith("ITEM: ATOMS"):
-            cols = lines[i].split()[2:]
-            iid, ivx = cols.index("id"), cols.index("vx")
-            rows = {}
-            for line in lines[i + 1:i + 1 + n]:
-                p = line.split()
-                rows[int(p[iid])] = tuple(float(v) for v in p[ivx:ivx + 3])
-            frames[step] = rows
-            i += 1 + n
-        else:
-            i += 1
-    return frames
+    """{step: {id: (vx, vy, vz)}} of the stability base's particle dump
+    (columns id x y z vx vy vz radius mass; caseio.dump_frames reads it)."""
+    return dict((step, dict((int(r[0]), tuple(r[4:7])) for r in rows))
+                for step, rows in caseio.dump_frames(path))
 
 
 def distance(a, b):

@@ -59,6 +59,9 @@ or one that foamDEM makes differently):
                 mu |F_n|; the reference's DEM caps spring plus damping at
                 mu |F_n|. Without the damping the force never exceeds the
                 cap: a bound on that difference
+  viscousForce  the viscous-stress force V_p div(tau) on every particle
+                (force model 'viscous'), on by default in the reference's
+                code and off in the tutorial
 
 Writes results/sensitivity/sensitivity.dat (one line per variant and
 quantity: variant, quantity, foamDEM with the reference's measures, with
@@ -195,6 +198,14 @@ def v_tangentialDampingOff(case):
             r"\g<1> tangential_damping off\g<2>\g<3>", count=0)
 
 
+def v_viscousForce(case):
+    coupling(case, r"^(forceModels\s+\(diFelice)", r"\g<1> viscous")
+    # the model's div(nu grad(U)^T), with the scheme of the solver's own
+    sed(os.path.join(case, "system/fvSchemes"),
+        r"^(\s*div\(\(\(voidfraction\*nuEff\)\*dev2\(T\(grad\(U\)\)\)\)\)\s+Gauss linear;)$",
+        r"\g<1>\n    div((nu*T(grad(U)))) Gauss linear;")
+
+
 VARIANTS = [
     ("likeForLike", "the tutorial: wall friction 0.343 (harmonic mean)", None),
     ("friction04", "particle-wall friction 0.4 (the wall's own value)", v_friction04),
@@ -207,6 +218,7 @@ VARIANTS = [
     ("facetedWall", "DEM pipe wall: the CFD mesh's 16-facet polygon (the reference's DEM wall)", v_facetedWall),
     ("facetedWallFlatBottom", "the faceted DEM wall turned by half a facet: a facet at the bottom", v_facetedWallFlatBottom),
     ("tangentialDampingOff", "no tangential damping in the Hertz-Mindlin contacts (bounds the reference's capped damping)", v_tangentialDampingOff),
+    ("viscousForce", "the viscous-stress force V_p div(tau) on the particles (on by default in the reference's code)", v_viscousForce),
 ]
 
 

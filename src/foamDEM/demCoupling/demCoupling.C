@@ -568,7 +568,7 @@ Foam::foamDEM::demCoupling::demCoupling
     reportedArrays_(false),
     logExchange_(dict_.getOrDefault("logExchange", false)),
     progress_(mesh_.time(), dict_),
-    writeDEMRestart_(dict_.getOrDefault("writeDEMRestart", false)),
+    writeDEMRestart_(dict_.getOrDefault("writeDEMRestart", true)),
     keepLastGood_(dict_.getOrDefault("writeParticlesAtFailure", true)),
     goodNowTime_(-GREAT),
     goodBeforeTime_(-GREAT),

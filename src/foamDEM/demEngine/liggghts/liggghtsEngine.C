@@ -21,6 +21,7 @@
 #include "neighbor.h"
 #include "modify.h"
 #include "fix.h"
+#include "write_restart.h"
 #include "fix_gravity.h"
 #include "fix_property_global.h"
 #include "fix_property_atom.h"
@@ -153,7 +154,7 @@ Foam::foamDEM::liggghtsEngine::liggghtsEngine
     }
     implicitDrag_ = (dragIntegration == "implicit");
     shapedSpheres_ = dict.getOrDefault<bool>("shapedSpheres", false);
-    keepHeld_ = couplingDict.getOrDefault<bool>("writeDEMRestart", false);
+    keepHeld_ = couplingDict.getOrDefault<bool>("writeDEMRestart", true);
 
     // Paths are relative to the (undecomposed) case directory
     const fileName caseDir(runTime.globalPath());
@@ -468,9 +469,9 @@ void Foam::foamDEM::liggghtsEngine::prepare(const exchangePlan& plan)
         // interval continues without a new set-up
         copyHeld(false);
         // Without bodies the first interval continues without a new
-        // set-up, as the straight run does; with bodies the straight run
-        // set up again after writing the restart (writeRestart), and so
-        // does this one
+        // set-up, as the straight run does after writing the restart; with
+        // bodies the straight run sets up after the write (writeRestart),
+        // and so does this one
         firstRun_ = bool(multisphere_);
         Info<< "    LIGGGHTS: continued run: the first step starts from the"
             << " forces and torques held at the restart's time";
@@ -1221,13 +1222,57 @@ void Foam::foamDEM::liggghtsEngine::writeRestart(const fileName& file)
 {
     copyHeld(true);
     mkDir(file.path());
-    run("write_restart " + file, "writing the DEM restart " + file);
+    contextGuard guard("writing the DEM restart " + file);
 
-    // write_restart re-initialises LIGGGHTS (System init: the neighbour
-    // settings among others). With multisphere bodies the next 'run ... pre
-    // no' then bins atoms with stale bin arrays: a segmentation fault in
-    // Neighbor::bin_atoms at np 2 (mixedBedNonSpherical). The next run
-    // sets up again.
+    // Written as LIGGGHTS writes its periodic restarts during a run
+    // (WriteRestart::write), not with the write_restart command: the
+    // command re-initialises LIGGGHTS and migrates atoms (init, pbc,
+    // exchange, borders), which leaves the neighbour lists, the bins and
+    // the forces of migrated atoms stale for the next 'run ... pre no': a
+    // segmentation fault in Neighbor::bin_atoms with bodies, and LIGGGHTS's
+    // own errors turned into segmentation faults. Written this way the run
+    // goes on exactly as without the write, and needs no new set-up.
+    LAMMPS_NS::Modify& modify = *lmp_->modify;
+    LAMMPS_NS::Atom& atom = *lmp_->atom;
+    LAMMPS_NS::Domain& domain = *lmp_->domain;
+
+    // Fixes copy their per-atom state in (the contact history from the
+    // neighbour lists)
+    modify.setup_pre_exchange();
+
+    // An atom that crossed a periodic boundary since the last neighbour
+    // build is outside the box, and read_restart would lose it: the file
+    // gets it wrapped, the run keeps it as it is
+    struct moved { int i; double x[3]; LAMMPS_NS::tagint image; };
+    std::vector<moved> wrapped;
+    for (int i = 0; i < atom.nlocal; ++i)
+    {
+        moved m{i, {atom.x[i][0], atom.x[i][1], atom.x[i][2]}, atom.image[i]};
+        domain.remap(atom.x[i], atom.image[i]);
+        if
+        (
+            atom.x[i][0] != m.x[0] || atom.x[i][1] != m.x[1]
+         || atom.x[i][2] != m.x[2]
+        )
+        {
+            wrapped.push_back(m);
+        }
+    }
+
+    std::vector<char> name(file.begin(), file.end());
+    name.push_back('\0');
+    LAMMPS_NS::WriteRestart(lmp_).write(name.data());
+
+    for (const moved& m : wrapped)
+    {
+        for (int k = 0; k < 3; ++k) atom.x[m.i][k] = m.x[k];
+        atom.image[m.i] = m.image;
+    }
+
+    // With bodies the next run sets up again, so that a run continued from
+    // this restart, which must set up, starts its first interval alike: fix
+    // multisphere's set-up recomputes the bodies' force and torque sums,
+    // which are not in the restart
     if (multisphere_)
     {
         firstRun_ = true;

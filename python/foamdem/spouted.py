@@ -58,7 +58,9 @@ def dominant_frequency(f, a, fmin=0.0):
 def plateau_statistics(tp, p, th, h, windows, skip_start, skip_end, fmin=0.0):
     """Per plateau (velocity, t0, t1): rms of p, dominant frequency, mean and
     maximum of h, in the window without skip_start and skip_end. Rows of
-    dicts; a plateau whose window holds fewer than 3 samples is left out."""
+    dicts; a plateau whose window holds fewer than 3 samples is left out,
+    and one whose samples end before its window does (a run still going)
+    has "complete" False."""
     rows = []
     for u, t0, t1 in windows:
         w0, w1 = window(t0, t1, skip_start, skip_end)
@@ -67,7 +69,9 @@ def plateau_statistics(tp, p, th, h, windows, skip_start, skip_end, fmin=0.0):
         if ts.size < 3 or hs.size < 1:
             continue
         f, a = amplitude_spectrum(ts, ps)
+        step = float(np.median(np.diff(ts)))
         rows.append({"u": u, "w0": w0, "w1": w1, "n": int(ts.size),
+                     "complete": bool(ts[-1] >= w1 - 2 * step),
                      "rms": rms_deviation(ps),
                      "fdom": dominant_frequency(f, a, fmin),
                      "hmean": float(np.mean(hs)), "hmax": float(np.max(hs)),

@@ -49,6 +49,14 @@ for row, (u, t0, t1), (mean, f1, a1, f2, a2) in zip(rows, windows, spec):
     check("plateau %.1f: height mean %.5f, max %.5f" % (u, row["hmean"], row["hmax"]),
           abs(row["hmean"] - hs.mean()) < 1e-12 and abs(row["hmax"] - hs.max()) < 1e-12, "")
 
+check("both windows complete", all(r["complete"] for r in rows), "")
+# a run still going: data to 6 s, the second window (4.5-7.75 s) incomplete
+cut = t <= 6.0
+part = spouted.plateau_statistics(t[cut], p[cut], t[cut], h[cut], windows, 0.5, 0.25)
+check("data to 6 s: first window complete, second not",
+      len(part) == 2 and part[0]["complete"] and not part[1]["complete"],
+      str([r["complete"] for r in part]))
+
 # rms_deviation is the N - 1 form: for (1, 2, 3, 4) it is sqrt(5/3)
 check("rms_deviation of 1..4 = sqrt(5/3)",
       abs(spouted.rms_deviation([1, 2, 3, 4]) - math.sqrt(5 / 3)) < 1e-15, "")

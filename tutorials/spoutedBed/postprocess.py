@@ -112,7 +112,10 @@ def main():
                 " amplitude spectrum; highest particle centre above the inlet plane:"
                 " mean and maximum\n")
         f.write("# inletVelocity rms_Pa dominantFrequency_Hz maxHeightMean_m maxHeightMax_m\n")
+        f.write("# only plateaus whose window the run has reached to its end\n")
         for r in rows:
+            if not r["complete"]:
+                continue
             f.write("%.3g %.6g %.6g %.6g %.6g\n" % (r["u"], r["rms"], r["fdom"],
                                                   r["hmean"], r["hmax"]))
 
@@ -120,8 +123,10 @@ def main():
                ("cfdStep_s", "%.6g" % dt_cfd),
                ("probeSamples", "%d" % tp.size)]
     for r in rows:
-        summary.append(("plateau_%.3g_m_s (window %.4g-%.4g s, %d samples)"
-                        % (r["u"], r["w0"], r["w1"], r["n"]),
+        summary.append(("plateau_%.3g_m_s (window %.4g-%.4g s, %d samples%s)"
+                        % (r["u"], r["w0"], r["w1"], r["n"],
+                           "" if r["complete"] else
+                           ", INCOMPLETE: data end at %.4g s" % tp[-1]),
                         "rms %.4g Pa, f %.4g Hz, hmean %.4g m, hmax %.4g m"
                         % (r["rms"], r["fdom"], r["hmean"], r["hmax"])))
 
@@ -153,7 +158,7 @@ def main():
         summary.append(("probeSamples_expected", "%d" % n_steps))
         summary.append(("probeInterval_s", "%.6g-%.6g" % (dts.min(), dts.max())))
         checks.append(("probe written every CFD step", rate_ok))
-        finite = len(rows) == len(windows) and all(
+        finite = len(rows) == len(windows) and all(r["complete"] for r in rows) and all(
             np.isfinite(r["rms"]) and np.isfinite(r["fdom"]) and np.isfinite(r["hmax"])
             for r in rows)
         checks.append(("analysis gives finite values for every plateau", finite))
@@ -166,7 +171,8 @@ def main():
     caseio.write_summary(".", summary)
     for r in rows:
         print("plateau %.3g m/s: rms %.4g Pa, dominant %.4g Hz, max height mean %.4g m,"
-              " max %.4g m" % (r["u"], r["rms"], r["fdom"], r["hmean"], r["hmax"]))
+              " max %.4g m%s" % (r["u"], r["rms"], r["fdom"], r["hmean"], r["hmax"],
+                                 "" if r["complete"] else " (INCOMPLETE window)"))
     for n, c in checks:
         print("%-60s %s" % (n, "ok" if c else "FAILED"))
     return 0 if ok else 1

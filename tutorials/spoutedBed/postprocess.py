@@ -198,6 +198,8 @@ def plots(out, tp, pp, th, hh, rows, windows):
 
     fig, ax = plt.subplots(figsize=(7, 4))
     for r in rows:
+        if not r["complete"]:
+            continue
         ax.plot(r["f"], r["a"], lw=0.8, label="%.3g m/s (%.3g Hz)" % (r["u"], r["fdom"]))
     ax.set_xlim(0, 30)
     ax.set_xlabel("f [Hz]")
@@ -218,6 +220,8 @@ def plots(out, tp, pp, th, hh, rows, windows):
     steps = np.array(sorted(dumps))
     for u, t0, t1 in windows:
         k = steps[np.argmin(np.abs(steps * dt - 0.5 * (t0 + t1)))]
+        if not t0 <= k * dt <= t1:
+            continue                        # the run has not reached it
         d = read_dump(dumps[k])
         if d is None:
             continue

@@ -1242,21 +1242,15 @@ void Foam::foamDEM::liggghtsEngine::writeRestart(const fileName& file)
 
     // An atom that crossed a periodic boundary since the last neighbour
     // build is outside the box, and read_restart would lose it: the file
-    // gets it wrapped, the run keeps it as it is
+    // gets it wrapped, the run keeps it as it is (remap changes an atom's
+    // image flags exactly when it wraps it)
     struct moved { int i; double x[3]; LAMMPS_NS::tagint image; };
     std::vector<moved> wrapped;
     for (int i = 0; i < atom.nlocal; ++i)
     {
         moved m{i, {atom.x[i][0], atom.x[i][1], atom.x[i][2]}, atom.image[i]};
         domain.remap(atom.x[i], atom.image[i]);
-        if
-        (
-            atom.x[i][0] != m.x[0] || atom.x[i][1] != m.x[1]
-         || atom.x[i][2] != m.x[2]
-        )
-        {
-            wrapped.push_back(m);
-        }
+        if (atom.image[i] != m.image) wrapped.push_back(m);
     }
 
     std::vector<char> name(file.begin(), file.end());

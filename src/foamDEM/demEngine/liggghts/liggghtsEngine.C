@@ -1263,6 +1263,15 @@ void Foam::foamDEM::liggghtsEngine::writeRestart(const fileName& file)
         atom.image[m.i] = m.image;
     }
 
+    label nWrapped = label(wrapped.size());
+    reduce(nWrapped, sumOp<label>());
+    if (nWrapped)
+    {
+        Info<< "DEM restart " << file.name() << ": " << nWrapped
+            << " atom(s) past a periodic boundary written wrapped into the"
+            << " box" << endl;
+    }
+
     // With bodies the next run sets up again, so that a run continued from
     // this restart, which must set up, starts its first interval alike: fix
     // multisphere's set-up recomputes the bodies' force and torque sums,

@@ -183,15 +183,29 @@ def read_surface_field_value(path):
 
 def fixed_bed_fit(u, dp, dp_plateau, lo=0.05, hi=0.75):
     """Least-squares fit dP = a U + b U^2 to the fixed-bed points
-    (lo < dP/dp_plateau < hi). Returns (a, b, number of points)."""
-    u = np.asarray(u)
-    dp = np.asarray(dp)
+    (lo < dP/dp_plateau < hi), with a >= 0 and b >= 0 as in Ergun's
+    equation (viscous and inertial terms). Unconstrained, a few noisy points
+    can give b < 0: a parabola that bends down and may never reach the
+    plateau (U_mf NaN). Then the best of the one-term fits (a U, or b U^2)
+    is taken. Returns (a, b, number of points)."""
+    u = np.asarray(u, dtype=float)
+    dp = np.asarray(dp, dtype=float)
     sel = (dp > lo * dp_plateau) & (dp < hi * dp_plateau) & (u > 0)
     if sel.sum() < 3:
         raise ValueError("fewer than 3 fixed-bed points in the sweep")
-    m = np.vstack([u[sel], u[sel] ** 2]).T
-    (a, b), *_ = np.linalg.lstsq(m, dp[sel], rcond=None)
-    return a, b, int(sel.sum())
+    us, ys = u[sel], dp[sel]
+    m = np.vstack([us, us ** 2]).T
+    (a, b), *_ = np.linalg.lstsq(m, ys, rcond=None)
+    if a < 0 or b < 0:
+        # The constrained minimum lies on a bound: one term alone
+        candidates = []
+        for k in (1, 2):
+            c = max(0.0, float(np.dot(us ** k, ys) / np.dot(us ** k, us ** k)))
+            ab = (c, 0.0) if k == 1 else (0.0, c)
+            r = ys - ab[0] * us - ab[1] * us ** 2
+            candidates.append((float(np.dot(r, r)), ab))
+        a, b = min(candidates)[1]
+    return float(a), float(b), int(sel.sum())
 
 
 def intersect(a, b, level):

@@ -27,6 +27,24 @@ set_tests_properties(continuation.cohesiveBedEvacuation PROPERTIES
     LABELS "integration;tutorial" TIMEOUT 900
     FIXTURES_REQUIRED cohesiveBedEvacuation_ci)
 
+# The same at np 2 (issue 15: the continuation of every tutorial, in
+# parallel too; particles deleted at the vent from either rank): the CI run
+# at np 2 (postprocess.py --ci must pass), then its copy continued from
+# 0.03 s with ./Allrun -ci -np 2 -continue, with the bound above
+add_test(NAME cohesiveBedEvacuation.np2
+    COMMAND ${TUT} cohesiveBedEvacuation ${FOAMDEM_WORK}/cohesiveBedEvacuation_np2 -ci -np 2)
+set_tests_properties(cohesiveBedEvacuation.np2 PROPERTIES
+    LABELS "integration;tutorial;parallel" TIMEOUT 900 PROCESSORS 2
+    FIXTURES_SETUP cohesiveBedEvacuation_np2)
+add_test(NAME continuation.cohesiveBedEvacuation.np2
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkTutorialContinuation
+            ${FOAMDEM_WORK}/cohesiveBedEvacuation_np2
+            ${FOAMDEM_WORK}/cohesiveBedEvacuation_continue_np2 0.03
+            --rows DEM/post/evacuation.dat:3:1,2,3,4,5 -- -ci -np 2)
+set_tests_properties(continuation.cohesiveBedEvacuation.np2 PROPERTIES
+    LABELS "integration;tutorial;parallel" TIMEOUT 900 PROCESSORS 2
+    FIXTURES_REQUIRED cohesiveBedEvacuation_np2)
+
 # Cohesion through the coupled solver (issue 14 part 5): the fluidizedBed CI
 # bed (4 000 spheres of 2 mm, E = 1 MPa, sweep to 2 U_mf) with simplified
 # JKR cohesion of 1e5 J/m^3 (this case's value; particle-particle and

@@ -40,3 +40,14 @@ add_test(NAME continuation.fluidizedBed
 set_tests_properties(continuation.fluidizedBed PROPERTIES
     LABELS "integration;tutorial" TIMEOUT 300
     FIXTURES_REQUIRED fluidizedBed_ci)
+
+# No np 2 continuation test: the CI run's checks depend on the realisation
+# of its bubbling bed (2026-12-05, four realisations of ./Allrun -ci: np 1
+# as written (8 digits) passes, plateau +0.6 %, U_mf (decreasing) 1.256
+# m/s; the same at 17 written digits, whose initial fields differ by 1e-16,
+# fails with U_mf 2.25 m/s (voidage on the decreasing branch's fixed-bed
+# part 0.507: the compressed sweep leaves the bed loose); -n 4001 fails
+# with U_mf 2.02 m/s; np 2 fails the plateau, -4.0 % against the 2 % bound).
+# The CI's sweep is too fast for a quasi-static defluidisation; the
+# tutorial README says so.
+

@@ -9,7 +9,8 @@
 2. Minimum fluidisation: on the decreasing branch of the sweep (the usual
    experimental practice: the defluidised bed's packing no longer remembers
    how it was poured), the fixed-bed points are fitted with dP = a U + b U^2
-   and U_mf is where the fit meets the measured plateau. Compared with the
+   (a, b >= 0, as in Ergun's equation; fluidbed.fixed_bed_fit) and U_mf is
+   where the fit meets the measured plateau. Compared with the
    Ergun U_mf at the voidage the bed had on that branch (asserted) and with
    Wen-Yu (reported). The increasing branch is reported as well.
 3. Sanity: the particle count stays nParticles; the void fraction stays in

@@ -22,6 +22,9 @@ the ramp. The dominant frequency is searched above --fmin Hz.
             CFD step, the analysis gives finite values for every plateau,
             no particle is lost and the mass is constant.
 --no-plot   skip the PNGs
+--skip S    drop the first S seconds of each window instead of 1/8 of the
+            hold (the mesh check, README: a run started from another's
+            state at 1.5 s is compared over 2.0-4.75 s)
 """
 import argparse
 import glob
@@ -80,6 +83,7 @@ def main():
     ap.add_argument("--ci", action="store_true")
     ap.add_argument("--no-plot", action="store_true")
     ap.add_argument("--fmin", type=float, default=0.0)
+    ap.add_argument("--skip", type=float, default=None)
     args = ap.parse_args()
     case = "."
     checks = []
@@ -100,13 +104,16 @@ def main():
     hd = latest_segments(np.loadtxt("DEM/post/height.dat", comments="#", ndmin=2))
     th, hh, nh, mh = hd[:, 0], hd[:, 1], hd[:, 2], hd[:, 3]
 
-    rows = spouted.plateau_statistics(tp, pp, th, hh, windows, hold / 8, hold / 16,
+    skip = hold / 8 if args.skip is None else args.skip
+    rows = spouted.plateau_statistics(tp, pp, th, hh, windows, skip, hold / 16,
                                       args.fmin)
     out = os.path.join("results", set_name)
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, "plateaus.dat"), "w") as f:
         f.write("# spoutedBed, set %s%s: per inlet velocity plateau, in its window"
-                " (first 1/8 and last 1/16 dropped)\n" % (set_name, " (CI)" if args.ci else ""))
+                " (first %s and last 1/16 dropped)\n"
+                % (set_name, " (CI)" if args.ci else "",
+                   "1/8" if args.skip is None else "%g s" % skip))
         f.write("# gauge pressure at the probe (rho p, p = 0 at the outlet, no"
                 " hydrostatic head): RMS deviation (N - 1) and dominant frequency of its"
                 " amplitude spectrum; highest particle centre above the inlet plane:"

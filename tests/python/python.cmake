@@ -60,8 +60,10 @@ set_tests_properties(python.archiveRun PROPERTIES LABELS "unit;python" TIMEOUT 6
 # fluidizedBed's fixed-bed fit dP = a U + b U^2 and its U_mf: exact data
 # recovered (U_mf by hand), and noisy points whose free fit bends down
 # (b < 0, never reaching the plateau) give a finite U_mf from the fit with
-# a, b >= 0, as in Ergun's equation (fails with the unconstrained fit:
-# U_mf NaN, which fluidizedBed.ci met at 17 written digits)
+# a, b >= 0, as in Ergun's equation, and both bent cases (b < 0 or a < 0
+# free) no worse than a grid search over a, b >= 0 (fails with the
+# unconstrained fit: U_mf NaN, which fluidizedBed.ci met at 17 written
+# digits; and with the linear term always taken)
 add_test(NAME python.fixedBedFit
     COMMAND sh -c "\"\${FOAMDEM_PYTHON:-python3}\" ${CMAKE_CURRENT_LIST_DIR}/testFixedBedFit.py")
 set_tests_properties(python.fixedBedFit PROPERTIES LABELS "unit;python" TIMEOUT 60)

@@ -23,8 +23,8 @@ the ramp. The dominant frequency is searched above --fmin Hz.
             no particle is lost and the mass is constant.
 --no-plot   skip the PNGs
 --skip S    drop the first S seconds of each window instead of 1/8 of the
-            hold (the mesh check, README: a run started from another's
-            state at 1.5 s is compared over 2.0-4.75 s)
+            hold (to compare a run started later within a plateau, e.g.
+            from another run's state, over the same window)
 """
 import argparse
 import glob

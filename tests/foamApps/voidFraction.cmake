@@ -3,7 +3,8 @@
 set(VF_RUN ${CMAKE_CURRENT_SOURCE_DIR}/foamApps/testVoidFraction/runTest)
 
 # suite:mesh:processors
-# snapped: the cohesiveBedEvacuation tutorial's snappyHexMesh mesh (24 362
+# snapped: the cohesiveBedEvacuation tutorial's snappyHexMesh mesh with the 15 mm
+# chamber it had until 2026-12-05 (Allmesh; 24 362
 # cells, 1 320 polyhedra): hinted locate against findCell's tetrahedra at
 # 20 000 points, then the box checks (about 1 min with the meshing)
 foreach(spec box:box:1 snapped:snapped:1 periodic:periodic:1 parallel:box:2 badInput:box:1 shapes:uniform:1)

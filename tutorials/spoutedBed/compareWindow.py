@@ -1,0 +1,75 @@
+#!/usr/bin/python3
+"""compareWindow.py CASE [CASE ...] --window T0 T1 [--fmin F] [--out FILE]
+
+The plateau statistics of postprocess.py (python/foamdem/spouted.py: the
+gauge pressure's RMS deviation and dominant frequency at the probe, the
+highest particle centre's mean and maximum) over one common window
+T0..T1 for several runs of the case, each as it stands on disk (continued
+segments joined as postprocess.py joins them). For the mesh check
+(README): runs that differ in one setting, or a run started from another
+run's state, compared over the same stretch of a plateau. Prints a table
+and, with --out, writes it (one line per case: case rms_Pa
+dominantFrequency_Hz maxHeightMean_m maxHeightMax_m samples cells).
+Exits 1 if a case's data do not cover the window.
+"""
+import argparse
+import os
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(os.environ.get("FOAMDEM_DIR", os.path.join(HERE, "..", "..")), "python"))
+import postprocess as pp  # noqa: E402
+from foamdem import caseio, spouted  # noqa: E402
+
+
+def cells(case):
+    """nCells from the mesh's owner file header (-1 if absent)."""
+    owner = os.path.join(case, "constant/polyMesh/owner")
+    if os.path.exists(owner):
+        head = open(owner).read(2000)
+        i = head.find("nCells:")
+        if i >= 0:
+            return int(head[i + 7:].split()[0])
+    return -1
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("cases", nargs="+")
+    ap.add_argument("--window", type=float, nargs=2, required=True)
+    ap.add_argument("--fmin", type=float, default=0.0)
+    ap.add_argument("--out")
+    args = ap.parse_args()
+    t0, t1 = args.window
+    lines, status = [], 0
+    for case in args.cases:
+        rho = caseio.foam_scalar(os.path.join(case, "constant/transportProperties"), "rho")
+        probe = pp.concat(os.path.join(case, "postProcessing/pressureProbe/*/p"))
+        hd = pp.latest_segments(np.loadtxt(os.path.join(case, "DEM/post/height.dat"),
+                                           comments="#", ndmin=2))
+        rows = spouted.plateau_statistics(probe[:, 0], rho * probe[:, 1], hd[:, 0],
+                                          hd[:, 1], [(0.0, t0, t1)], 0.0, 0.0, args.fmin)
+        if not rows or not rows[0]["complete"] or probe[0, 0] > t0:
+            print("%s: the data (%.4g-%.4g s) do not cover %g-%g s"
+                  % (case, probe[0, 0], probe[-1, 0], t0, t1))
+            status = 1
+            continue
+        r = rows[0]
+        lines.append("%s %.6g %.6g %.6g %.6g %d %d" % (case, r["rms"], r["fdom"], r["hmean"],
+                                                       r["hmax"], r["n"], cells(case)))
+    head = ("# spoutedBed, window %g-%g s: case rms_Pa dominantFrequency_Hz"
+            " maxHeightMean_m maxHeightMax_m probeSamples cells" % (t0, t1))
+    print(head)
+    print("\n".join(lines))
+    if args.out:
+        with open(args.out, "w") as f:
+            f.write(head + "\n" + "\n".join(lines) + "\n")
+    return status
+
+
+if __name__ == "__main__":
+    sys.exit(main())

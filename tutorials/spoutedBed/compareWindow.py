@@ -16,13 +16,11 @@ import argparse
 import os
 import sys
 
-import numpy as np
-
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.environ.get("FOAMDEM_DIR", os.path.join(HERE, "..", "..")), "python"))
 import postprocess as pp  # noqa: E402
-from foamdem import caseio, spouted  # noqa: E402
+from foamdem import spouted  # noqa: E402
 
 
 def cells(case):
@@ -47,15 +45,12 @@ def main():
     t0, t1 = args.window
     lines, status = [], 0
     for case in args.cases:
-        rho = caseio.foam_scalar(os.path.join(case, "constant/transportProperties"), "rho")
-        probe = pp.concat(os.path.join(case, "postProcessing/pressureProbe/*/p"))
-        hd = pp.latest_segments(np.loadtxt(os.path.join(case, "DEM/post/height.dat"),
-                                           comments="#", ndmin=2))
-        rows = spouted.plateau_statistics(probe[:, 0], rho * probe[:, 1], hd[:, 0],
-                                          hd[:, 1], [(0.0, t0, t1)], 0.0, 0.0, args.fmin)
-        if not rows or not rows[0]["complete"] or probe[0, 0] > t0:
+        tp, p, hd = pp.load_signals(case)
+        rows = spouted.plateau_statistics(tp, p, hd[:, 0], hd[:, 1], [(0.0, t0, t1)],
+                                          0.0, 0.0, args.fmin)
+        if not rows or not rows[0]["complete"] or tp[0] > t0:
             print("%s: the data (%.4g-%.4g s) do not cover %g-%g s"
-                  % (case, probe[0, 0], probe[-1, 0], t0, t1))
+                  % (case, tp[0], tp[-1], t0, t1))
             status = 1
             continue
         r = rows[0]

@@ -66,6 +66,16 @@ def latest_segments(d):
     return np.array(keep)
 
 
+def load_signals(case):
+    """The probe's times and gauge pressure [Pa] (rho p, every CFD step) and
+    the rows of DEM/post/height.dat, continued segments joined."""
+    rho = caseio.foam_scalar(os.path.join(case, "constant/transportProperties"), "rho")
+    probe = concat(os.path.join(case, "postProcessing/pressureProbe/*/p"))
+    hd = latest_segments(np.loadtxt(os.path.join(case, "DEM/post/height.dat"),
+                                    comments="#", ndmin=2))
+    return probe[:, 0], rho * probe[:, 1], hd
+
+
 def read_vector_column(path):
     """surfaceFieldValue.dat of a vector: time and the three components."""
     rows = []
@@ -95,13 +105,10 @@ def main():
     n_inserted = int(sum(int(r[4]) for r in parts))
     windows = [tuple(r) for r in np.loadtxt("DEM/post/schedule.dat", ndmin=2)]
     hold = windows[0][2] - windows[0][1]
-    rho = caseio.foam_scalar("constant/transportProperties", "rho")
     setup = open("DEM/post/setupDict").read()
     dt_cfd = float(re.search(r"(?m)^deltaT\s+([-+0-9.eE]+);", setup).group(1))
 
-    probe = concat("postProcessing/pressureProbe/*/p")
-    tp, pp = probe[:, 0], rho * probe[:, 1]            # gauge pressure [Pa]
-    hd = latest_segments(np.loadtxt("DEM/post/height.dat", comments="#", ndmin=2))
+    tp, pp, hd = load_signals(case)
     th, hh, nh, mh = hd[:, 0], hd[:, 1], hd[:, 2], hd[:, 3]
 
     skip = hold / 8 if args.skip is None else args.skip

@@ -201,16 +201,19 @@ def periodic_moving_average(values, n):
     return sum(np.roll(values, k) for k in range(-half, half + 1)) / n
 
 
-def reference_slug(x, xlo, L, R, dp, phi_min, n_average):
+def reference_slug(x, xlo, L, R, dp, phi_min, n_average, area=None):
     """The slug of one frame by the reference's slices: (rear, front,
     length, number of separate slug runs) or None when no slice (or every
-    slice) is slug. x: particle centres along the axis (any image)."""
+    slice) is slug. x: particle centres along the axis (any image). area:
+    the slices' cross-section (default the exact cylinder's, pi R^2)."""
     n = int(round(L / dp))
     width = L / n
+    if area is None:
+        area = np.pi * R * R
     xw = np.mod(x - xlo, L)
     k = np.minimum((xw / width).astype(int), n - 1)
     count = np.bincount(k, minlength=n)
-    eps = 1 - count * (np.pi / 6 * dp ** 3) / (np.pi * R * R * width)
+    eps = 1 - count * (np.pi / 6 * dp ** 3) / (area * width)
     dense = periodic_moving_average(eps, n_average) <= 1 - phi_min
     start, run = longest_circular_run(dense)
     if run == 0 or run == n:
@@ -253,19 +256,24 @@ def force_balance(ref, window, v_front):
 
 
 def reference_measures(dump_files, dt, xlo, L, R, dp, rhop, x_plane,
-                       phi_min=0.45, n_average=5):
+                       phi_min=0.45, n_average=5, area=None):
     """The reference's frame-wise measures of a run's dumps (sorted by step).
 
     Returns a dict of arrays over the frames: t, rear, front (unwrapped
     along the run), length, vParticles (|mean velocity vector| in the
     slug), runs (separate slug runs in the frame), crossedMass (net mass
-    across x_plane since the first frame). Frames without a slug have NaN."""
+    across x_plane since the first frame), enteredMass (the mass of the
+    particles beyond x_plane, x_plane < x <= xlo + L, that were not there
+    in the previous frame; in the first frame all of them: the count of
+    the reference's script, see script_mass_flow). Frames without a slug
+    have NaN. area: the slices' cross-section (reference_slug)."""
     files = sorted(dump_files, key=lambda f: int(re.findall(r"\.(\d+)\.txt$", f)[0]))
     m = rhop * np.pi / 6 * dp ** 3
     out = {k: np.full(len(files), np.nan) for k in
-           ("t", "rear", "front", "length", "vParticles", "runs", "crossedMass")
-           + FORCE_KEYS}
+           ("t", "rear", "front", "length", "vParticles", "runs", "crossedMass",
+            "enteredMass") + FORCE_KEYS}
     prev_ids, prev_side, crossed = None, None, 0.0
+    prev_beyond = np.zeros(0)
     for i, f in enumerate(files):
         step, d = read_dump(f)
         ids, x, v = d[:, 0], d[:, 1], d[:, 4:7]
@@ -279,7 +287,10 @@ def reference_measures(dump_files, dt, xlo, L, R, dp, rhop, x_plane,
             crossed += m * float(np.sum(side - prev_side))
         out["crossedMass"][i] = crossed
         prev_ids, prev_side = ids, side
-        s = reference_slug(x, xlo, L, R, dp, phi_min, n_average)
+        beyond = ids[np.mod(x - xlo, L) > x_plane - xlo]
+        out["enteredMass"][i] = m * float(np.sum(~np.isin(beyond, prev_beyond)))
+        prev_beyond = beyond
+        s = reference_slug(x, xlo, L, R, dp, phi_min, n_average, area)
         if s is None:
             continue
         rear, front, length, runs = s
@@ -305,6 +316,22 @@ def reference_measures(dump_files, dt, xlo, L, R, dp, rhop, x_plane,
     if have.any():
         out["front"][have] = unwrap(out["front"][have], L)
     return out
+
+
+def script_mass_flow(t, entered):
+    """The solids mass flow rate as the reference's post-processing script
+    computes it (read for the comparison; the case page describes the
+    intent, "the mass that crosses the plane, accumulated from t = 0 and
+    divided by the elapsed time"): at frame i, the entries of the frames
+    before it, sum_{k<i} entered_k / (t_i - t_0). The entries count every
+    particle that is beyond the plane and was not in the previous frame,
+    whichever way it came, and the first frame counts all the particles
+    beyond the plane. NaN at the first frame."""
+    rate = np.full(len(t), np.nan)
+    if len(t) > 1:
+        before = np.cumsum(entered)[:-1]
+        rate[1:] = before / (t[1:] - t[0])
+    return rate
 
 
 def central_difference(t, x, stencil):

@@ -25,6 +25,12 @@ slug particles more than 2 d inside the slug's ends carry a gas force of
 slug 0.2 mN and -0.25 mN, the others none; the sums over the reference's
 slug and over the rest are then those counts times the forces, and the
 slug particles' mean axial velocity is 0.8.
+
+The reference's script's variants (ScriptMeasures): slices of a smaller
+cross-section lengthen the slug by a slice at each end (by hand from the
+5-slice averages); its entries beyond the plane equal the net crossings
+for the rigid pattern, count the first frame's particles beyond the plane,
+and count a particle that crosses forward, back and forward twice.
 """
 import os
 import sys
@@ -138,6 +144,69 @@ class ReferenceMeasures(unittest.TestCase):
         # without the force columns: no force balance
         out, _ = self.run_case(1.6, 4)
         self.assertTrue(np.all(np.isnan(out["fGasSlug"])))
+
+
+class ScriptMeasures(unittest.TestCase):
+    """The reference's post-processing script's variants of the measures:
+    slices of another cross-section (its mesh's) and the mass flow from the
+    particles that enter the part of the pipe beyond the plane."""
+
+    def test_area(self):
+        # Slices of a cross-section 1.15 times smaller: the solid fractions
+        # scale by 1.15, so a 5-slice window with 2 slug slices (0.42 x
+        # 1.15 = 0.483) is slug and one with 1 (0.36 x 1.15 = 0.414) is
+        # not: the slug gains a slice at each end, 82 slices, length 0.40 m
+        with tempfile.TemporaryDirectory() as tmp:
+            files, _ = write_frames(tmp, 1.6, 0.025, 4)
+            out = slug.reference_measures(files, DT_DEM, XLO, L, R, DP, RHOP, 0.375,
+                                          area=np.pi * R * R / 1.15)
+        np.testing.assert_allclose(out["length"], 0.4, atol=1e-9)
+
+    def test_entries_rigid(self):
+        # The rigid pattern moves 0.04 m per frame, less than the 0.125 m
+        # beyond the plane: every particle that crosses enters once, so the
+        # entries after the first frame are the net crossings; the first
+        # frame counts the layer beyond the plane (0.375-0.5 m lies in the
+        # layer: phi 0.3 over 0.125 m of pipe, to one particle)
+        with tempfile.TemporaryDirectory() as tmp:
+            files, _ = write_frames(tmp, 1.6, 0.025, 26)
+            out = slug.reference_measures(files, DT_DEM, XLO, L, R, DP, RHOP, 0.375)
+        m = RHOP * VP
+        np.testing.assert_allclose(out["enteredMass"][1:], np.diff(out["crossedMass"]),
+                                   rtol=0, atol=1e-12)
+        first = 0.3 * np.pi * R * R * 0.125 * RHOP
+        self.assertLessEqual(abs(out["enteredMass"][0] - first), m)
+        rate = slug.script_mass_flow(out["t"], out["enteredMass"])
+        self.assertTrue(np.isnan(rate[0]))
+        # frame i: the entries of frames 0..i-1 over t_i - t_0
+        i = 10
+        self.assertAlmostEqual(rate[i], np.sum(out["enteredMass"][:i]) / (out["t"][i] - out["t"][0]),
+                               places=14)
+
+    def test_entries_back_and_forth(self):
+        # One particle crosses the plane forward, back and forward again:
+        # the net crossing is one, the script's entries are two (no sign)
+        xs = [0.37, 0.38, 0.37, 0.38]
+        with tempfile.TemporaryDirectory() as tmp:
+            files = []
+            for k, x in enumerate(xs):
+                path = os.path.join(tmp, "particles.%d.txt" % (1000 * k))
+                with open(path, "w") as f:
+                    f.write("ITEM: TIMESTEP\n%d\nITEM: NUMBER OF ATOMS\n2\n" % (1000 * k))
+                    f.write("ITEM: BOX BOUNDS pp ff ff\n-0.5 0.5\n-0.044 0.044\n-0.044 0.044\n")
+                    f.write("ITEM: ATOMS id x y z vx vy vz ix\n")
+                    f.write("1 %g 0 0 0 0 0 0\n2 -0.2 0 0 0 0 0 0\n" % x)
+                files.append(path)
+            out = slug.reference_measures(files, DT_DEM, XLO, L, R, DP, RHOP, 0.375)
+        m = RHOP * VP
+        np.testing.assert_allclose(out["crossedMass"], [0, m, 0, m], atol=1e-15)
+        np.testing.assert_allclose(out["enteredMass"], [0, m, 0, m], atol=1e-15)
+        self.assertAlmostEqual(np.sum(out["enteredMass"]) / out["crossedMass"][-1], 2.0)
+
+    def test_script_rate(self):
+        rate = slug.script_mass_flow(np.array([0.0, 1.0, 2.0, 4.0]),
+                                     np.array([3.0, 1.0, 2.0, 5.0]))
+        np.testing.assert_allclose(rate[1:], [3.0, 2.0, 1.5])
 
 
 if __name__ == "__main__":

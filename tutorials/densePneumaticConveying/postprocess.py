@@ -227,6 +227,21 @@ def main():
         ("slugLength", "m", stats(ref["length"], w_r)),
         ("solidsMassFlowRateWindow", "kg/s", (mdot_window, np.nan)),
     ]
+    # The same as the reference's post-processing script computes them
+    # (slices of its mesh's cross-section, refScriptArea; the mass flow from
+    # the entries beyond the plane, script_mass_flow, averaged over the
+    # window as the published value is over t > 4 s)
+    ref_s = slug.reference_measures(dumps, par["demTimestep"], setup["xlo"], L, R,
+                                    par["dp"], rhop, x_plane,
+                                    area=par["refScriptArea"])
+    v_front_s = slug.central_difference(t_r, ref_s["front"], int(par["refStencilFrames"]))
+    mdot_script = slug.script_mass_flow(t_r, ref_s["enteredMass"])
+    script_table = [
+        ("slugVelocity", "m/s", stats(v_front_s, w_r)),
+        ("particleVelocityInSlug", "m/s", stats(ref_s["vParticles"], w_r)),
+        ("solidsMassFlowRate", "kg/s", stats(mdot_script, w_r)),
+        ("slugLength", "m", stats(ref_s["length"], w_r)),
+    ]
     # The slug's axial force balance (N), from the dumps' force columns
     vf = stats(v_front, w_r)[0]
     fb = slug.force_balance(ref, w_r, vf)
@@ -301,6 +316,14 @@ def main():
                    int(par["refStencilFrames"]), x_plane, t_r[0]))
         for name, unit, (m, s) in ref_table:
             f.write("ref_%-24s %-6s %12.6g %12.6g\n" % (name, unit, m, s))
+        f.write("# as the reference's post-processing script computes them: slices"
+                " of its mesh's cross-section (%.6g m^2); mass flow from the"
+                " particles beyond x = %.4g m that were not there in the previous"
+                " frame (all of them in the first), entries before each frame over"
+                " the elapsed time, averaged over the window\n"
+                % (par["refScriptArea"], x_plane))
+        for name, unit, (m, s) in script_table:
+            f.write("script_%-21s %-6s %12.6g %12.6g\n" % (name, unit, m, s))
         if np.isfinite(fb["fGasSlug"]):
             f.write("# the slug's axial force balance over the window (the reference's"
                     " slug; the layer: all other particles): gas and wall forces from"
@@ -317,6 +340,8 @@ def main():
     if not args.ci and not args.window:
         own = dict((name, m) for name, _, (m, _) in table)
         refm = dict((name, m) for name, _, (m, _) in ref_table)
+        scriptm = dict((name, m) for name, _, (m, _) in script_table)
+        scriptm["gasVelocity"] = refm["gasVelocity"]
         path = os.path.join(case, "results", "comparison.dat")
         with open(path, "w") as f:
             f.write("# densePneumaticConveying against Lavrinec et al. (case page"
@@ -326,9 +351,14 @@ def main():
                     " foamDEM_ownMeasures: postprocess.py's axial bins\n")
             f.write("# solidsMassFlowRate: reference measure cumulative from t = 0"
                     " (as published); own measure sum(m v_x)/L over the window\n")
-            f.write("# name reference foamDEM_referenceMeasures foamDEM_ownMeasures\n")
+            f.write("# foamDEM_scriptMeasures: as the reference's post-processing"
+                    " script computes them (mesh cross-section slices, entries"
+                    " beyond the plane)\n")
+            f.write("# name reference foamDEM_referenceMeasures foamDEM_ownMeasures"
+                    " foamDEM_scriptMeasures\n")
             for name, value, _ in REFERENCE:
-                f.write("%-24s %10.4g %12.5g %12.5g\n" % (name, value, refm[name], own[name]))
+                f.write("%-24s %10.4g %12.5g %12.5g %12.5g\n"
+                        % (name, value, refm[name], own[name], scriptm[name]))
         print(open(path).read())
 
     if not args.no_plot and not args.window:

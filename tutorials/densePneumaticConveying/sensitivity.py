@@ -62,6 +62,15 @@ or one that foamDEM makes differently):
   viscousForce  the viscous-stress force V_p div(tau) on every particle
                 (force model 'viscous'), on by default in the reference's
                 code and off in the tutorial
+  axialFill     the packing's fill along the pipe (axialFill 1: gravity
+                -x against an end wall, a lid over the layer outside the
+                body; fillTime 2 s), as the reference loaded its slug,
+                instead of across it (gravity -y); then the same carve,
+                thinning and settling
+  axialFillFacetedWall
+                axialFill inside the faceted DEM wall (pipeWallFacets 16):
+                the reference's loading method, DEM wall and, if the fill
+                holds them, its 32 194 particles
 
 Writes results/sensitivity/sensitivity.dat (one line per variant and
 quantity: variant, quantity, foamDEM with the reference's measures, with
@@ -206,6 +215,17 @@ def v_viscousForce(case):
         r"\g<1>\n    div((nu*T(grad(U)))) Gauss linear;")
 
 
+def v_axialFill(case):
+    parameter(case, "axialFill", 1)
+    # the fill along 1 m of pipe takes longer than the one across it
+    parameter(case, "fillTime", "2.0")
+
+
+def v_axialFillFacetedWall(case):
+    v_axialFill(case)
+    v_facetedWall(case)
+
+
 VARIANTS = [
     ("likeForLike", "the tutorial: wall friction 0.343 (harmonic mean)", None),
     ("friction04", "particle-wall friction 0.4 (the wall's own value)", v_friction04),
@@ -219,6 +239,8 @@ VARIANTS = [
     ("facetedWallFlatBottom", "the faceted DEM wall turned by half a facet: a facet at the bottom", v_facetedWallFlatBottom),
     ("tangentialDampingOff", "no tangential damping in the Hertz-Mindlin contacts (bounds the reference's capped damping)", v_tangentialDampingOff),
     ("viscousForce", "the viscous-stress force V_p div(tau) on the particles (on by default in the reference's code)", v_viscousForce),
+    ("axialFill", "the slug packed along the pipe (gravity -x against an end wall, under a lid over the layer; 2 s), as the reference loaded it", v_axialFill),
+    ("axialFillFacetedWall", "axialFill inside the faceted DEM wall: the reference's loading, DEM wall and particle count", v_axialFillFacetedWall),
 ]
 
 

@@ -543,6 +543,7 @@ Foam::foamDEM::demCoupling::demCoupling
         mesh_,
         dimensionedVector("zero", dimVelocity, Zero)
     ),
+    averageEveryStep_(false),
     fExplicit_
     (
         IOobject("fExplicit", mesh_.time().timeName(), mesh_),
@@ -678,8 +679,13 @@ Foam::foamDEM::demCoupling::demCoupling
     for (const particleOutput& o : outputs_)
     {
         o.addRequirements(plan_);
+        averageEveryStep_ = averageEveryStep_ || o.readsCouplingFields();
     }
     plan_.print();
+    Info<< "    Us (volume-weighted particle velocity, output only): averaged "
+        << (averageEveryStep_
+          ? "at every coupling step (a particle output reads it)"
+          : "at write times only") << endl;
     engine_->prepare(plan_);
 
     checkTimeSteps();
@@ -832,7 +838,10 @@ void Foam::foamDEM::demCoupling::update()
     {
         scopedTimer timer(timers_.voidFraction);
         voidFraction_->compute(particles_, alpha_);
-        averaging_.average(particles_, voidFraction_(), UsAvg_);
+        if (averageEveryStep_ || mesh_.time().writeTime())
+        {
+            averaging_.average(particles_, voidFraction_(), UsAvg_);
+        }
     }
 
     {

@@ -164,6 +164,14 @@ def main():
         "wallPairFriction": pair(par["friction"], par["wallFriction"]),
         "wallPairRestitution": pair(par["restitution"], par["wallRestitution"]),
         "wallPairRolling": pair(par["rollingFriction"], par["wallRolling"]),
+        # the fill's friction: packFriction without rolling friction, or
+        # the case's own values (fillCaseFriction 1)
+        "fillFriction": par["friction"] if par.get("fillCaseFriction", 0) else par["packFriction"],
+        "fillWallFriction": (pair(par["friction"], par["wallFriction"])
+                             if par.get("fillCaseFriction", 0) else par["packFriction"]),
+        "fillRolling": par["rollingFriction"] if par.get("fillCaseFriction", 0) else 0.0,
+        "fillWallRolling": (pair(par["rollingFriction"], par["wallRolling"])
+                            if par.get("fillCaseFriction", 0) else 0.0),
         "pipeRadius": R,
         "pipeWallFacets": facets,
         # the packing's fill region: inside the wall (the inscribed circle

@@ -69,8 +69,11 @@ or one that foamDEM makes differently):
                 thinning and settling
   axialFillFacetedWall
                 axialFill inside the faceted DEM wall (pipeWallFacets 16):
-                the reference's loading method, DEM wall and, if the fill
-                holds them, its 32 194 particles
+                the reference's loading method, DEM wall and particle count
+  axialFillCaseFriction
+                axialFillFacetedWall with the case's friction during the
+                fill (fillCaseFriction 1), as the reference loaded with its
+                case's materials: the pipe wall carries more of the pile
 
 Writes results/sensitivity/sensitivity.dat (one line per variant and
 quantity: variant, quantity, foamDEM with the reference's measures, with
@@ -226,6 +229,11 @@ def v_axialFillFacetedWall(case):
     v_facetedWall(case)
 
 
+def v_axialFillCaseFriction(case):
+    v_axialFillFacetedWall(case)
+    parameter(case, "fillCaseFriction", 1)
+
+
 VARIANTS = [
     ("likeForLike", "the tutorial: wall friction 0.343 (harmonic mean)", None),
     ("friction04", "particle-wall friction 0.4 (the wall's own value)", v_friction04),
@@ -241,6 +249,7 @@ VARIANTS = [
     ("viscousForce", "the viscous-stress force V_p div(tau) on the particles (on by default in the reference's code)", v_viscousForce),
     ("axialFill", "the slug packed along the pipe (gravity -x against an end wall, under a lid over the layer; 2 s), as the reference loaded it", v_axialFill),
     ("axialFillFacetedWall", "axialFill inside the faceted DEM wall: the reference's loading, DEM wall and particle count", v_axialFillFacetedWall),
+    ("axialFillCaseFriction", "axialFillFacetedWall with the case's friction during the fill (particle 0.3, wall 0.343, rolling 0.2) instead of 0.1 without rolling", v_axialFillCaseFriction),
 ]
 
 

@@ -263,7 +263,7 @@ def reference_measures(dump_files, dt, xlo, L, R, dp, rhop, x_plane,
     along the run), length, vParticles (|mean velocity vector| in the
     slug), runs (separate slug runs in the frame), crossedMass (net mass
     across x_plane since the first frame), enteredMass (the mass of the
-    particles beyond x_plane, x_plane < x <= xlo + L, that were not there
+    particles beyond x_plane, x_plane < x < xlo + L, that were not there
     in the previous frame; in the first frame all of them: the count of
     the reference's script, see script_mass_flow). Frames without a slug
     have NaN. area: the slices' cross-section (reference_slug)."""

@@ -30,7 +30,8 @@ The reference's script's variants (ScriptMeasures): slices of a smaller
 cross-section lengthen the slug by a slice at each end (by hand from the
 5-slice averages); its entries beyond the plane equal the net crossings
 for the rigid pattern, count the first frame's particles beyond the plane,
-and count a particle that crosses forward, back and forward twice.
+and count a particle that crosses forward, back and forward twice, also
+when its position is a periodic image outside the box.
 """
 import os
 import sys
@@ -202,6 +203,25 @@ class ScriptMeasures(unittest.TestCase):
         np.testing.assert_allclose(out["crossedMass"], [0, m, 0, m], atol=1e-15)
         np.testing.assert_allclose(out["enteredMass"], [0, m, 0, m], atol=1e-15)
         self.assertAlmostEqual(np.sum(out["enteredMass"]) / out["crossedMass"][-1], 2.0)
+
+    def test_entries_images(self):
+        # Positions outside the box (periodic images, as a dump may hold
+        # between re-wraps) count by their wrapped position: -0.62 is
+        # 0.38 (beyond the plane), 1.37 is 0.37 (not beyond)
+        xs = [0.37, -0.62, 1.37, 0.38]
+        with tempfile.TemporaryDirectory() as tmp:
+            files = []
+            for k, x in enumerate(xs):
+                path = os.path.join(tmp, "particles.%d.txt" % (1000 * k))
+                with open(path, "w") as f:
+                    f.write("ITEM: TIMESTEP\n%d\nITEM: NUMBER OF ATOMS\n1\n" % (1000 * k))
+                    f.write("ITEM: BOX BOUNDS pp ff ff\n-0.5 0.5\n-0.044 0.044\n-0.044 0.044\n")
+                    f.write("ITEM: ATOMS id x y z vx vy vz ix\n")
+                    f.write("1 %g 0 0 0 0 0 0\n" % x)
+                files.append(path)
+            out = slug.reference_measures(files, DT_DEM, XLO, L, R, DP, RHOP, 0.375)
+        m = RHOP * VP
+        np.testing.assert_allclose(out["enteredMass"], [0, m, 0, m], atol=1e-15)
 
     def test_script_rate(self):
         rate = slug.script_mass_flow(np.array([0.0, 1.0, 2.0, 4.0]),

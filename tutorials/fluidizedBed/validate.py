@@ -65,8 +65,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--case", default=".")
-    ap.add_argument("--tol-dp", type=float, default=0.02,
-                    help="bound on the plateau dP error (default 0.02)")
+    ap.add_argument("--tol-dp", type=float, default=None,
+                    help="bound on the plateau dP error (default 0.02; --ci 0.07)")
     ap.add_argument("--tol-umf", type=float, default=0.10,
                     help="bound on the U_mf error against Ergun (default 0.10)")
     ap.add_argument("--umf-branch", choices=("decreasing", "increasing"),
@@ -81,7 +81,8 @@ def main():
     args = ap.parse_args()
     if args.ci:
         args.umf_branch = "increasing"
-        args.tol_dp = 0.07
+    if args.tol_dp is None:
+        args.tol_dp = 0.07 if args.ci else 0.02
     case = args.case
 
     par = caseio.liggghts_variables(os.path.join(case, "DEM/parameters"))

@@ -190,9 +190,11 @@ def main():
         # period inserts into whatever room is left. The axial fill inserts
         # the case's particles (1 % more for the carve and the thinning) as
         # the reference inserted its 32 194: its pile, compressed along the
-        # pipe, would hold about 10 % more
+        # pipe, would hold about 10 % more (axialFillToCapacity 1 fills it
+        # all, and the thinning then takes the excess out at random)
         "nFill": (int(math.ceil(1.01 * par["nParticles"]))
-                  if par.get("axialFill", 0) and not args.ci
+                  if par.get("axialFill", 0) and not par.get("axialFillToCapacity", 0)
+                  and not args.ci
                   else int(math.ceil(0.7 * v_shape / vp))),
         "fillEvery": steps(par["fillPeriod"], dt_pack),
         "fillSteps": steps(p("fillTime"), dt_pack),

@@ -70,6 +70,11 @@ or one that foamDEM makes differently):
   axialFillFacetedWall
                 axialFill inside the faceted DEM wall (pipeWallFacets 16):
                 the reference's loading method, DEM wall and particle count
+  axialFillThinned
+                axialFillFacetedWall filled to capacity
+                (axialFillToCapacity 1) and thinned at random to
+                nParticles: the reference's count in its wall, over the
+                whole shape
   axialFillCaseFriction
                 axialFillFacetedWall with the case's friction during the
                 fill (fillCaseFriction 1), as the reference loaded with its
@@ -234,6 +239,11 @@ def v_axialFillCaseFriction(case):
     parameter(case, "fillCaseFriction", 1)
 
 
+def v_axialFillThinned(case):
+    v_axialFillFacetedWall(case)
+    parameter(case, "axialFillToCapacity", 1)
+
+
 VARIANTS = [
     ("likeForLike", "the tutorial: wall friction 0.343 (harmonic mean)", None),
     ("friction04", "particle-wall friction 0.4 (the wall's own value)", v_friction04),
@@ -249,6 +259,7 @@ VARIANTS = [
     ("viscousForce", "the viscous-stress force V_p div(tau) on the particles (on by default in the reference's code)", v_viscousForce),
     ("axialFill", "the slug packed along the pipe (gravity -x against an end wall, under a lid over the layer; 2 s), as the reference loaded it", v_axialFill),
     ("axialFillFacetedWall", "axialFill inside the faceted DEM wall: the reference's loading, DEM wall and particle count", v_axialFillFacetedWall),
+    ("axialFillThinned", "axialFillFacetedWall filled to capacity (35 339) and thinned at random to 32 194: the reference's particle count in its wall, spread over the whole shape", v_axialFillThinned),
     ("axialFillCaseFriction", "axialFillFacetedWall with the case's friction during the fill (particle 0.3, wall 0.343, rolling 0.2) instead of 0.1 without rolling", v_axialFillCaseFriction),
 ]
 

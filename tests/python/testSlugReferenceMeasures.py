@@ -184,21 +184,27 @@ class ScriptMeasures(unittest.TestCase):
         self.assertAlmostEqual(rate[i], np.sum(out["enteredMass"][:i]) / (out["t"][i] - out["t"][0]),
                                places=14)
 
+    @staticmethod
+    def measure_positions(frames):
+        """reference_measures of frames given as lists of x (ids 1, 2, ...
+        at rest, y = z = 0, image flag 0), one frame per 1000 DEM steps."""
+        with tempfile.TemporaryDirectory() as tmp:
+            files = []
+            for k, xs in enumerate(frames):
+                path = os.path.join(tmp, "particles.%d.txt" % (1000 * k))
+                with open(path, "w") as f:
+                    f.write("ITEM: TIMESTEP\n%d\nITEM: NUMBER OF ATOMS\n%d\n" % (1000 * k, len(xs)))
+                    f.write("ITEM: BOX BOUNDS pp ff ff\n-0.5 0.5\n-0.044 0.044\n-0.044 0.044\n")
+                    f.write("ITEM: ATOMS id x y z vx vy vz ix\n")
+                    for i, x in enumerate(xs):
+                        f.write("%d %g 0 0 0 0 0 0\n" % (i + 1, x))
+                files.append(path)
+            return slug.reference_measures(files, DT_DEM, XLO, L, R, DP, RHOP, 0.375)
+
     def test_entries_back_and_forth(self):
         # One particle crosses the plane forward, back and forward again:
         # the net crossing is one, the script's entries are two (no sign)
-        xs = [0.37, 0.38, 0.37, 0.38]
-        with tempfile.TemporaryDirectory() as tmp:
-            files = []
-            for k, x in enumerate(xs):
-                path = os.path.join(tmp, "particles.%d.txt" % (1000 * k))
-                with open(path, "w") as f:
-                    f.write("ITEM: TIMESTEP\n%d\nITEM: NUMBER OF ATOMS\n2\n" % (1000 * k))
-                    f.write("ITEM: BOX BOUNDS pp ff ff\n-0.5 0.5\n-0.044 0.044\n-0.044 0.044\n")
-                    f.write("ITEM: ATOMS id x y z vx vy vz ix\n")
-                    f.write("1 %g 0 0 0 0 0 0\n2 -0.2 0 0 0 0 0 0\n" % x)
-                files.append(path)
-            out = slug.reference_measures(files, DT_DEM, XLO, L, R, DP, RHOP, 0.375)
+        out = self.measure_positions([[x, -0.2] for x in (0.37, 0.38, 0.37, 0.38)])
         m = RHOP * VP
         np.testing.assert_allclose(out["crossedMass"], [0, m, 0, m], atol=1e-15)
         np.testing.assert_allclose(out["enteredMass"], [0, m, 0, m], atol=1e-15)
@@ -208,18 +214,7 @@ class ScriptMeasures(unittest.TestCase):
         # Positions outside the box (periodic images, as a dump may hold
         # between re-wraps) count by their wrapped position: -0.62 is
         # 0.38 (beyond the plane), 1.37 is 0.37 (not beyond)
-        xs = [0.37, -0.62, 1.37, 0.38]
-        with tempfile.TemporaryDirectory() as tmp:
-            files = []
-            for k, x in enumerate(xs):
-                path = os.path.join(tmp, "particles.%d.txt" % (1000 * k))
-                with open(path, "w") as f:
-                    f.write("ITEM: TIMESTEP\n%d\nITEM: NUMBER OF ATOMS\n1\n" % (1000 * k))
-                    f.write("ITEM: BOX BOUNDS pp ff ff\n-0.5 0.5\n-0.044 0.044\n-0.044 0.044\n")
-                    f.write("ITEM: ATOMS id x y z vx vy vz ix\n")
-                    f.write("1 %g 0 0 0 0 0 0\n" % x)
-                files.append(path)
-            out = slug.reference_measures(files, DT_DEM, XLO, L, R, DP, RHOP, 0.375)
+        out = self.measure_positions([[x] for x in (0.37, -0.62, 1.37, 0.38)])
         m = RHOP * VP
         np.testing.assert_allclose(out["enteredMass"], [0, m, 0, m], atol=1e-15)
 

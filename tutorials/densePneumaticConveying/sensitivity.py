@@ -62,6 +62,10 @@ or one that foamDEM makes differently):
   viscousForce  the viscous-stress force V_p div(tau) on every particle
                 (force model 'viscous'), on by default in the reference's
                 code and off in the tutorial
+  cellPoint     the fluid velocity and void fraction the forces see,
+                interpolated at the particle's position (couplingKernel
+                cellPoint), as the reference's finite-element code
+                evaluates them, instead of its cell's values
   axialFill     the packing's fill along the pipe (axialFill 1: gravity
                 -x against an end wall, a lid over the layer outside the
                 body; fillTime 2 s), as the reference loaded its slug,
@@ -223,6 +227,11 @@ def v_viscousForce(case):
         r"\g<1>\n    div((nu*T(grad(U)))) Gauss linear;")
 
 
+def v_cellPoint(case):
+    with open(os.path.join(case, "constant/couplingProperties"), "a") as f:
+        f.write("\ncouplingKernel cellPoint;\n")
+
+
 def v_axialFill(case):
     parameter(case, "axialFill", 1)
     # the fill along 1 m of pipe takes longer than the one across it
@@ -257,6 +266,7 @@ VARIANTS = [
     ("facetedWallFlatBottom", "the faceted DEM wall turned by half a facet: a facet at the bottom", v_facetedWallFlatBottom),
     ("tangentialDampingOff", "no tangential damping in the Hertz-Mindlin contacts (bounds the reference's capped damping)", v_tangentialDampingOff),
     ("viscousForce", "the viscous-stress force V_p div(tau) on the particles (on by default in the reference's code)", v_viscousForce),
+    ("cellPoint", "u_f and eps at the particle interpolated at its position (couplingKernel cellPoint), as the reference's finite elements evaluate them", v_cellPoint),
     ("axialFill", "the slug packed along the pipe (gravity -x against an end wall, under a lid over the layer; 2 s), as the reference loaded it", v_axialFill),
     ("axialFillFacetedWall", "axialFill inside the faceted DEM wall: the reference's loading, DEM wall and particle count", v_axialFillFacetedWall),
     ("axialFillThinned", "axialFillFacetedWall filled to capacity (35 339) and thinned at random to 32 194: the reference's particle count in its wall, spread over the whole shape", v_axialFillThinned),

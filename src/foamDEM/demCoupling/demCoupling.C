@@ -847,10 +847,10 @@ void Foam::foamDEM::demCoupling::update()
     {
         scopedTimer timer(timers_.forces);
         particleData& p = particles_;
-        // u_f at the particles (the cell's U, or read with the void
-        // fraction's kernel), then the forces, with the undisturbed u_f if
-        // the self-induced velocity is corrected
-        undisturbed_->read(U_, p);
+        // u_f at the particles (the cell's U, read with the void
+        // fraction's kernel, or interpolated), then the forces, with the
+        // undisturbed u_f if the self-induced velocity is corrected
+        undisturbed_->read(U_, alpha_, p);
         undisturbed_->evaluate(p, forces_);
 
         const label nCells = mesh_.nCells();

@@ -1,6 +1,7 @@
 #include "undisturbedVelocity.H"
 #include "selfInducedVelocity.H"
 #include "mathematicalConstants.H"
+#include "interpolationCellPoint.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -9,6 +10,7 @@ Foam::foamDEM::undisturbedVelocity::kernelNames
 ({
     { kernels::cell, "cell" },
     { kernels::voidFraction, "voidFraction" },
+    { kernels::cellPoint, "cellPoint" },
 });
 
 const Foam::Enum<Foam::foamDEM::undisturbedVelocity::methods>
@@ -93,6 +95,19 @@ Foam::foamDEM::undisturbedVelocity::undisturbedVelocity
     correctPressureGradient_(correctPressureGradient),
     maxRelativeCorrection_(0)
 {
+    if (interpolates() && corrects())
+    {
+        FatalIOErrorInFunction(couplingDict)
+            << "undisturbedVelocity "
+            << methodNames[methods::selfInducedCorrection]
+            << " with couplingKernel " << kernelNames[kernels::cellPoint]
+            << " in " << couplingDict.name() << nl << nl
+            << "Valid undisturbedVelocity types with couplingKernel "
+            << kernelNames[kernels::cellPoint] << " :" << nl
+            << wordList({methodNames[methods::none]}) << nl
+            << "(the correction's mobility is that of the cell and"
+            << " voidFraction kernels' read)" << exit(FatalIOError);
+    }
     Info<< "    coupling kernel " << kernelNames[kernel_]
         << (spreads() && !voidFraction_.smooths()
           && voidFraction_.subCellVariance(1) == 0
@@ -109,9 +124,33 @@ Foam::foamDEM::undisturbedVelocity::undisturbedVelocity
 void Foam::foamDEM::undisturbedVelocity::read
 (
     const volVectorField& U,
+    const volScalarField& alpha,
     particleData& p
 )
 {
+    if (interpolates())
+    {
+        // Point values by volPointInterpolation (its weights are cached
+        // on the mesh), then the cell's tetrahedra
+        const interpolationCellPoint<vector> Ui(U);
+        const interpolationCellPoint<scalar> alphai(alpha);
+        cellU_.setSize(p.size());
+        forAll(p.cell, i)
+        {
+            const label c = p.cell[i];
+            if (c < 0)
+            {
+                p.fluidVelocity[i] = Zero;
+                cellU_[i] = Zero;
+                continue;
+            }
+            cellU_[i] = U[c];
+            p.fluidVelocity[i] = Ui.interpolate(p.position[i], c);
+            p.voidFraction[i] = alphai.interpolate(p.position[i], c);
+        }
+        return;
+    }
+
     if (!spreads())
     {
         forAll(p.cell, i)
@@ -249,6 +288,19 @@ void Foam::foamDEM::undisturbedVelocity::addCorrectionSource
     vectorField& forceOnFluid
 ) const
 {
+    if (interpolates())
+    {
+        forAll(p.cell, i)
+        {
+            const label c = p.cell[i];
+            if (c >= 0)
+            {
+                forceOnFluid[c] -=
+                    p.dragCoeff[i]*(p.fluidVelocity[i] - cellU_[i]);
+            }
+        }
+        return;
+    }
     if (!corrects())
     {
         return;

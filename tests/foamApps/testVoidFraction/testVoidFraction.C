@@ -23,7 +23,11 @@ Description
     (the box decomposed; processor patches), badInput (FatalIOError on
     inconsistent keys), snapped (a snappyHexMesh mesh, the
     cohesiveBedEvacuation tutorial's: hinted locate against findCell with
-    tetrahedra at 20 000 random points, then the box checks).
+    tetrahedra at 20 000 random points, then the box checks), shapes,
+    interpolation (couplingKernel cellPoint: a linear U and eps read
+    exactly at the particles on a uniform mesh, serial and decomposed; the
+    cell kernel's read off it; the implicit coupling's explicit share
+    balancing the reaction; the correction refused).
 
     Exit code 1 when any check fails; every check prints PASS or FAIL.
 
@@ -44,6 +48,8 @@ Usage
 #include "dividedVoidFraction.H"
 #include "locateModel.H"
 #include "particleAveraging.H"
+#include "undisturbedVelocity.H"
+#include "volPointInterpolation.H"
 
 using namespace Foam;
 using namespace Foam::foamDEM;
@@ -1227,10 +1233,284 @@ void shapesSuite(const fvMesh& mesh)
 }
 
 
+//- couplingKernel cellPoint (undisturbedVelocity): u_f and eps at each
+//  particle are interpolated at its position. On a uniform mesh the cell-
+//  point interpolation reproduces a linear field exactly (point values are
+//  averages of symmetric neighbours); the cell kernel reads the cell's
+//  value, off by up to |grad U| h/2. With implicit coupling the fluid's
+//  implicit term sees the cell's U, and addCorrectionSource must add the
+//  rest of the reaction.
+void interpolationSuite(const fvMesh& mesh)
+{
+    const scalar h = typicalCellSize(mesh);
+    const boundBox bb(mesh.points());
+    const point x0 = bb.midpoint();
+    const tensor G(150, -70, 30, 20, 210, -110, 90, 40, -60);   // 1/s
+    const vector U0(0.3, -0.2, 0.5);
+    const vector a(10, -15, 20);                                // 1/m
+    auto uLin = [&](const point& x) { return U0 + (G & (x - x0)); };
+    auto epsLin = [&](const point& x) { return 0.6 + (a & (x - x0)); };
+
+    // Linear fields, boundary values the field's at the face centres
+    volVectorField U
+    (
+        IOobject
+        (
+            "U", mesh.time().timeName(), mesh,
+            IOobject::NO_READ, IOobject::NO_WRITE, false
+        ),
+        mesh,
+        dimensionedVector(dimVelocity, Zero),
+        fixedValueFvPatchField<vector>::typeName
+    );
+    volScalarField alpha
+    (
+        IOobject
+        (
+            "voidFraction", mesh.time().timeName(), mesh,
+            IOobject::NO_READ, IOobject::NO_WRITE, false
+        ),
+        mesh,
+        dimensionedScalar("one", dimless, 1.0),
+        fixedValueFvPatchField<scalar>::typeName
+    );
+    forAll(U, c)
+    {
+        U[c] = uLin(mesh.C()[c]);
+        alpha[c] = epsLin(mesh.C()[c]);
+    }
+    forAll(mesh.boundary(), patchi)
+    {
+        if (mesh.boundary()[patchi].coupled())
+        {
+            continue;
+        }
+        const vectorField& cf = mesh.C().boundaryField()[patchi];
+        forAll(cf, f)
+        {
+            U.boundaryFieldRef()[patchi][f] = uLin(cf[f]);
+            alpha.boundaryFieldRef()[patchi][f] = epsLin(cf[f]);
+        }
+    }
+    U.correctBoundaryConditions();
+    alpha.correctBoundaryConditions();
+
+    // Random particles inside the box, at cell centres and at mesh points,
+    // and one outside
+    Random rnd(4242);
+    particleSet s;
+    for (label i = 0; i < 300; ++i)
+    {
+        s.add(rnd.position(bb.min(), bb.max()), 0.2*h);
+    }
+    for (label i = 0; i < 10; ++i)
+    {
+        s.add(mesh.C()[rnd.position<label>(0, mesh.nCells() - 1)], 0.2*h);
+        s.add(mesh.points()[rnd.position<label>(0, mesh.nPoints() - 1)], 0.2*h);
+    }
+    s.add(bb.max() + point::uniform(h), 0.2*h);
+    particleData p(makeParticles(mesh, s));
+    forAll(p.velocity, i)
+    {
+        p.velocity[i] = vector(0.1, 0.2, -0.1)*rnd.sample01<scalar>();
+    }
+    label nIn = 0;
+    forAll(p.cell, i)
+    {
+        nIn += p.cell[i] >= 0;
+    }
+    Info<< "interpolation: " << p.size() << " particles, " << nIn
+        << " in this rank's mesh" << nl;
+
+    autoPtr<voidFractionModel> vf =
+        voidFractionModel::New(couplingDict("centre", dictionary()), mesh);
+
+    auto kernelDict = [](const word& kernel)
+    {
+        dictionary dict;
+        dict.add("couplingKernel", kernel);
+        return dict;
+    };
+
+    // cellPoint: exact for the linear fields
+    {
+        undisturbedVelocity ud
+        (
+            kernelDict("cellPoint"), mesh, vf(), 1.2, 1.5e-5, false
+        );
+        p.voidFraction = -1;
+        ud.read(U, alpha, p);
+
+        // Points on the box's edges and corners: their boundary faces are
+        // not coplanar
+        boolList onEdge(mesh.nPoints(), false);
+        forAll(mesh.pointFaces(), pt)
+        {
+            vector n0(Zero);
+            for (const label f : mesh.pointFaces()[pt])
+            {
+                if (mesh.isInternalFace(f)) continue;
+                const label patchi = mesh.boundaryMesh().whichPatch(f);
+                if (mesh.boundaryMesh()[patchi].coupled()) continue;
+                const vector n = mesh.faceAreas()[f]/mag(mesh.faceAreas()[f]);
+                if (mag(n0) == 0)
+                {
+                    n0 = n;
+                }
+                else if (mag(n & n0) < 0.99)
+                {
+                    onEdge[pt] = true;
+                }
+            }
+        }
+        const pointScalarField alphaPoints
+        (
+            volPointInterpolation::New(mesh).interpolate(alpha)
+        );
+        scalar errU = 0, errEps = 0;
+        label nExact = 0, nEdge = 0;
+        bool bounded = true;
+        bool outsideZero = true;
+        forAll(p.cell, i)
+        {
+            if (p.cell[i] < 0)
+            {
+                outsideZero = outsideZero && mag(p.fluidVelocity[i]) == 0;
+                continue;
+            }
+            const label c = p.cell[i];
+            bool edgeCell = false;
+            for (const label pt : mesh.cellPoints()[c])
+            {
+                edgeCell = edgeCell || onEdge[pt];
+            }
+            if (edgeCell)
+            {
+                // Bounded by the values it interpolates
+                scalar lo = alpha[c], hi = alpha[c];
+                for (const label pt : mesh.cellPoints()[c])
+                {
+                    lo = min(lo, alphaPoints[pt]);
+                    hi = max(hi, alphaPoints[pt]);
+                }
+                bounded = bounded
+                 && p.voidFraction[i] >= lo - 1e-14
+                 && p.voidFraction[i] <= hi + 1e-14;
+                ++nEdge;
+                continue;
+            }
+            ++nExact;
+            errU = max(errU, mag(p.fluidVelocity[i] - uLin(p.position[i])));
+            errEps = max(errEps, mag(p.voidFraction[i] - epsLin(p.position[i])));
+        }
+        errU = returnReduce(errU, maxOp<scalar>());
+        errEps = returnReduce(errEps, maxOp<scalar>());
+        reduce(nExact, sumOp<label>());
+        reduce(nEdge, sumOp<label>());
+        check
+        (
+            errU < 1e-12 && errEps < 1e-12 && nExact > 100,
+            str("cellPoint: a linear U and eps at the positions of ", nExact,
+                " particles (cells off the box's edges) to 1e-12 (", errU,
+                " m/s, ", errEps, ")")
+        );
+        check
+        (
+            bounded && nEdge > 0,
+            str("cellPoint: eps at ", nEdge, " particles in cells on the"
+                " box's edges within the values interpolated (the point"
+                " values there average faces of two walls: not exact)")
+        );
+        check(outsideZero, "cellPoint: u_f = 0 for a particle outside");
+
+        // The reaction: implicit -K (U_c - v) plus the explicit share
+        // is -K (u_f - v) per particle, summed over all of them
+        vectorField forceOnFluid(mesh.nCells(), Zero);
+        vector implicitPart(Zero), onParticles(Zero);
+        forAll(p.cell, i)
+        {
+            p.dragCoeff[i] = 1e-4*(1 + rnd.sample01<scalar>());
+            const label c = p.cell[i];
+            if (c >= 0)
+            {
+                implicitPart -= p.dragCoeff[i]*(U[c] - p.velocity[i]);
+                onParticles +=
+                    p.dragCoeff[i]*(p.fluidVelocity[i] - p.velocity[i]);
+            }
+        }
+        ud.addCorrectionSource(p, forceOnFluid);
+        const vector onFluid = returnReduce
+        (
+            implicitPart + sum(forceOnFluid), sumOp<vector>()
+        );
+        reduce(onParticles, sumOp<vector>());
+        const scalar mismatch =
+            mag(onFluid + onParticles)/max(mag(onParticles), VSMALL);
+        check
+        (
+            mismatch < 1e-12,
+            str("cellPoint: the fluid's implicit term and explicit share"
+                " balance the particles' drag (", mismatch, ")")
+        );
+    }
+
+    // cell: the cell's value, off the linear field inside the cell
+    {
+        undisturbedVelocity ud(kernelDict("cell"), mesh, vf(), 1.2, 1.5e-5, false);
+        ud.read(U, alpha, p);
+        bool cellValue = true;
+        scalar offLinear = 0;
+        forAll(p.cell, i)
+        {
+            const label c = p.cell[i];
+            if (c >= 0)
+            {
+                cellValue = cellValue && p.fluidVelocity[i] == U[c];
+                offLinear = max
+                (
+                    offLinear, mag(p.fluidVelocity[i] - uLin(p.position[i]))
+                );
+            }
+        }
+        offLinear = returnReduce(offLinear, maxOp<scalar>());
+        check
+        (
+            cellValue && offLinear > 1e-2*mag(G)*h,
+            str("cell: u_f is the cell's U, up to ", offLinear,
+                " m/s off the linear field (|G| h = ", mag(G)*h, ")")
+        );
+    }
+
+    // cellPoint with the self-induced correction: FatalIOError
+    {
+        FatalIOError.throwExceptions();
+        dictionary dict(kernelDict("cellPoint"));
+        dict.add("undisturbedVelocity", word("selfInducedCorrection"));
+        std::string message;
+        try
+        {
+            undisturbedVelocity ud(dict, mesh, vf(), 1.2, 1.5e-5, false);
+        }
+        catch (const Foam::error& e)
+        {
+            message = e.message();
+        }
+        FatalIOError.dontThrowExceptions();
+        check
+        (
+            message.find("selfInducedCorrection") != std::string::npos
+         && message.find("Valid undisturbedVelocity") != std::string::npos,
+            str("cellPoint with selfInducedCorrection: FatalIOError \"",
+                message.substr(0, 90).c_str(), "...\"")
+        );
+    }
+}
+
+
 int main(int argc, char *argv[])
 {
     argList::addNote("Tests of the void fraction models and averaging");
-    argList::addOption("suite", "name", "box, snapped, periodic, parallel, badInput, shapes or timing");
+    argList::addOption("suite", "name", "box, snapped, periodic, parallel, badInput, shapes, interpolation or timing");
     argList::addOption("nParticles", "N", "timing: number of particles");
     argList::addOption("radius", "r", "timing: radius in cell sizes");
 
@@ -1274,6 +1554,10 @@ int main(int argc, char *argv[])
     else if (suite == "shapes")
     {
         shapesSuite(mesh);
+    }
+    else if (suite == "interpolation")
+    {
+        interpolationSuite(mesh);
     }
     else
     {

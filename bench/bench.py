@@ -10,7 +10,11 @@ Each benchmark runs with its baseline in the same invocation:
   5. np = 2 vs np = 1 speed-up and the exchange bytes (two sizes),
   6. peak RSS per particle and per cell beyond LIGGGHTS and OpenFOAM alone,
   7. particle output: time and size per write of particleOutput hdf5
-     against the lagrangian cloud (np 1 and np 2).
+     against the lagrangian cloud (np 1 and np 2),
+  8. densePneumaticConveying: the coupled run (tutorial, np 2; its CI
+     section by default, --pneumatic-full for the reference's 32 194
+     particles) against standalone LIGGGHTS on the same packing, with the
+     same script and coupling fixes, for the same DEM steps.
 Results: bench/results/<date>/table.md (+ raw.json, work/ with the runs).
 
 The fluidBed case (bench/cases/fluidBed): 2 mm glass spheres (2500 kg/m^3)
@@ -230,6 +234,64 @@ def standalone(d, log="log.standalone", script="DEM/in.standalone"):
 
 # ---------------------------------------------------------------------------
 
+PNEUMATIC_STANDALONE = """# bench/run: the tutorial's DEM scene alone, on the same packing, with the
+# coupling fixes foamDEM adds (their Ksl, uf and dragforce stay zero: no
+# gas), for the coupled run's DEM steps in one run
+include         DEM/in.liggghts
+fix             foamDEM_couple all couple/cfd couple_every 0 mpi
+fix             foamDEM_force all couple/cfd/force/implicit transfer_torque no CrankNicolson 1.0
+run             %d
+"""
+
+
+def pneumatic(work, np=2, full=False, end=None):
+    """densePneumaticConveying: ./Allrun (packing + coupled run) then
+    LIGGGHTS alone from the same packed restart for the same DEM steps."""
+    src = os.path.join(os.environ["FOAMDEM_DIR"], "tutorials", "densePneumaticConveying")
+    d = os.path.join(work, "pneumatic" + ("Full" if full else "CI"))
+    if os.path.exists(d):
+        shutil.rmtree(d)
+    shutil.copytree(src, d)
+    subprocess.call(["./Allclean"], cwd=d, stdout=subprocess.DEVNULL,
+                    stderr=subprocess.DEVNULL)
+    cmd = ["./Allrun", "-np", str(np)] + ([] if full else ["-ci"])
+    if end:
+        cmd += ["-end", "%g" % end]
+    r = {"allrun": run(cmd, d, "log.Allrun.bench"), "np": np,
+         "system": "full" if full else "CI"}
+    log = open(os.path.join(d, "log.pisoDEMFoam")).read()
+    m = re.search(r"foamDEM timing \[s\]: DEM ([^,]+), coupling ([^ ]+)", log)
+    r["dem"], r["coupling"] = float(m.group(1)), float(m.group(2))
+    m = re.search(r"foamDEM run: .*wall ([0-9.]+) (min|h|s)", log)
+    scale = {"s": 1.0, "min": 60.0, "h": 3600.0}[m.group(2)]
+    r["coupledWall"] = float(m.group(1)) * scale
+    m = re.search(r"DEM time step ([0-9.eE+-]+) s, (\d+) DEM steps per CFD step, "
+                  r"(\d+) particles", log)
+    dtDem, r["particles"] = float(m.group(1)), int(m.group(3))
+    tEnd = float(re.findall(r"^Time = ([0-9.eE+-]+)", log, re.M)[-1])
+    r["simTime"] = tEnd
+    r["steps"] = int(round(tEnd / dtDem))
+    pack = open(os.path.join(d, "DEM", "log.pack")).read()
+    r["packLoop"] = sum(float(x) for x in re.findall(r"Loop time of ([0-9.eE+-]+)", pack))
+
+    # foamDEMLiggghts: LIGGGHTS's own driver linked as the solver links it
+    # (Debian's liggghts binary crashes on rank 1 with a -screen file here)
+    with open(os.path.join(d, "DEM", "in.benchStandalone"), "w") as f:
+        f.write(PNEUMATIC_STANDALONE % r["steps"])
+    sa = run(["mpirun", "--oversubscribe", "--mca", "mpi_yield_when_idle", "1",
+              "-np", str(np), "foamDEMLiggghts", "-in", "DEM/in.benchStandalone",
+              "-log", "log.benchStandalone", "-screen", "screen.benchStandalone"],
+             d, "log.benchStandalone.out")
+    text = open(os.path.join(d, "log.benchStandalone")).read()
+    m = re.findall(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps "
+                   r"with (\d+) atoms", text)
+    sa.update(loop=float(m[-1][0]), steps=int(m[-1][2]), particles=int(m[-1][3]))
+    r["standalone"] = sa
+    return r
+
+
+# ---------------------------------------------------------------------------
+
 def goldschmidt(work, simTime):
     """DPMFoam on its tutorial and foamDEM on the counterpart, same window."""
     res = {}
@@ -325,7 +387,11 @@ def main():
     ap.add_argument("--quick", action="store_true", help="small size, few steps (< 5 min)")
     ap.add_argument("--dpm-time", type=float, help="simulated time of the Goldschmidt runs [s]")
     ap.add_argument("--repeat", type=int, help="runs of the timed np 1 / standalone / np 2 cases, best kept (default 2, --quick 1)")
-    ap.add_argument("--only", default="", help="comma list of benchmarks 1-7 (default all)")
+    ap.add_argument("--only", default="", help="comma list of benchmarks 1-8 (default all)")
+    ap.add_argument("--pneumatic-full", action="store_true",
+                    help="8: the tutorial's full system (32 194 particles; packing ~10 min on 2 cores) instead of its CI section")
+    ap.add_argument("--pneumatic-end", type=float,
+                    help="8: simulated time of the coupled run [s] (default: the CI run's 0.1 s; 0.05 s with --pneumatic-full)")
     ap.add_argument("--out", help="results directory (default bench/results/<date>)")
     a = ap.parse_args()
     size = a.size or (5000 if a.quick else 25000)
@@ -333,7 +399,7 @@ def main():
     repeat = a.repeat or (1 if a.quick else 2)
     steps = max(INTERVAL, steps // INTERVAL * INTERVAL)
     dpmTime = a.dpm_time or (0.001 if a.quick else 0.005)
-    only = set(a.only.split(",")) if a.only else set("1234567")
+    only = set(a.only.split(",")) if a.only else set("12345678")
     nLayers = max(1, int(round(size / PER_LAYER)))
     stamp = datetime.datetime.now().strftime("%Y-%m-%d_%H%M%S")
     out = a.out or os.path.join(BENCH, "results", stamp)
@@ -409,6 +475,11 @@ def main():
         for n in (1, 2):
             say("[7] particle output, cloud vs hdf5, np = %d ..." % n)
             R["output_np%d" % n] = outputs(work, nLayers, steps, n, repeat)
+    if only & set("8"):
+        say("[8] densePneumaticConveying (%s), np = 2, coupled and standalone ..."
+            % ("full system" if a.pneumatic_full else "CI section"))
+        R["pneumatic"] = pneumatic(work, 2, a.pneumatic_full,
+                                   a.pneumatic_end or (0.05 if a.pneumatic_full else None))
     R["loadEnd"] = loadavg()
     json.dump(R, open(os.path.join(out, "raw.json"), "w"), indent=1)
     table(R, out)
@@ -434,10 +505,11 @@ def table(R, out):
         s = R["standalone"]
         thrS = s["particles"] * s["steps"] / s["loop"]
         thrD = N * steps / t["dem"]
-        rows.append(("2 coupled DEM / standalone LIGGGHTS",
-                     "%.2f (DEM part %s vs standalone %s p-steps/s, %.1f s loop); total coupled / standalone %.2f"
-                     % (thrD / thrS, fmt(thrD), fmt(thrS), s["loop"], thr / thrS),
-                     ">= 0.8", "yes" if thrD / thrS >= 0.8 else "NO", s["load"]))
+        rows.append(("2 total coupled / standalone LIGGGHTS (bed with gas)",
+                     "%.2f (coupled %s p-steps/s over the whole time loop vs standalone %s, %.1f s loop); "
+                     "DEM part alone / standalone %.2f (%s p-steps/s; the bed fluidises, the standalone one does not)"
+                     % (thr / thrS, fmt(thr), fmt(thrS), s["loop"], thrD / thrS, fmt(thrD)),
+                     ">= 0.85", "yes" if thr / thrS >= 0.85 else "NO", s["load"]))
         if "coupledStill" in R:
             cs_ = R["coupledStill"]
             thrDs = N * steps / cs_["timers"]["dem"]
@@ -456,10 +528,11 @@ def table(R, out):
                          "(standalone + fixes) %.2f"
                          % (s["loop"], INTERVAL, sf["loop"], sf["loop"] / s["loop"], demStill,
                             demStill / sf["loop"], sf["loop"] / demStill),
-                         "-", "-", sf["load"]))
+                         ">= 0.95", "yes" if sf["loop"] / demStill >= 0.95 else "NO",
+                         sf["load"]))
         rows.append(("3 coupling share of wall time",
                      "%.2f %% (%.2f s of %.1f s)" % (100 * share / total, share, total),
-                     "<= 5 %", "yes" if share / total <= 0.05 else "NO", c["load"]))
+                     "<= 3 %", "yes" if share / total <= 0.03 else "NO", c["load"]))
     if "goldschmidt" in R:
         g = R["goldschmidt"]
         dw = g["dpm"]["clock"] / g["simTime"]
@@ -483,12 +556,17 @@ def table(R, out):
                              % (k, v["particles"], v["bytesSent"],
                                 v["bytesSent"] / max(v["particles"], 1)) for k, v in e.items())
         cs = R["coupled"]["cpuProcess"] / (R["np2"]["cpuProcess"] / 2)
+        # every repeat against the best np 1 run: the target must hold in
+        # each, not only in the best
+        each = [R["coupled"]["clock"] / r["clock"] for r in R.get("np2Runs", [R["np2"]])]
         rows.append(("5 speed-up np 2 / np 1",
-                     "%.2f wall (%.1f s vs %.1f s); %.2f from CPU time (np 1 CPU s / (np 2 CPU s / 2), start-up included: "
+                     "%.2f wall (%.1f s vs %.1f s; each np 2 run: %s); %.2f from CPU time (np 1 CPU s / (np 2 CPU s / 2), start-up included: "
                      "the speed-up on 2 idle cores if waiting costs nothing); exchange %d particles: %s; %d particles: %s"
-                     % (sp, R["coupled"]["clock"], R["np2"]["clock"], cs, N, exs(ex),
+                     % (sp, R["coupled"]["clock"], R["np2"]["clock"],
+                        ", ".join("%.2f" % e for e in each), cs, N, exs(ex),
                         R["np2half"]["size"], exs(exh)),
-                     ">= 1.7", "yes" if sp >= 1.7 else "NO", R["np2"]["load"]))
+                     ">= 1.85 in every run", "yes" if min(each) >= 1.85 else "NO",
+                     R["np2"]["load"]))
     if "mem" in R and "coupled" in R:
         m = R["mem"]
         dC = R["coupled"]["rssKiB"] - m["coupled0_r1"]["rssKiB"]
@@ -522,6 +600,21 @@ def table(R, out):
                         c["bytes"] / max(c["writes"], 1) / 1e3, c["particles"],
                         h["writes"], c["writes"]),
                      "-", "-", h["load"] + "; " + c["load"]))
+    if "pneumatic" in R:
+        p = R["pneumatic"]
+        sa = p["standalone"]
+        ratio = p["coupledWall"] / sa["loop"]
+        rows.append(("8 densePneumaticConveying coupled / standalone LIGGGHTS (np %d)" % p["np"],
+                     "%.2f (coupled %.1f s of wall for %g s, %d DEM steps of %d particles: DEM %.1f s, "
+                     "coupling %.1f s; standalone, same packing, script and coupling fixes, no gas: %.1f s; "
+                     "DEM part / standalone %.2f). Packing %.0f s of LIGGGHTS loop time. System: %s; "
+                     "the standalone slug rests where the coupled one moves"
+                     % (ratio, p["coupledWall"], p["simTime"], p["steps"], p["particles"],
+                        p["dem"], p["coupling"], sa["loop"], p["dem"] / sa["loop"],
+                        p["packLoop"], "the tutorial's full" if p["system"] == "full"
+                        else "the tutorial's CI section (6 277 particles, 960 cells: the full system's particles per cell)"),
+                     "<= 1.2", "yes" if ratio <= 1.2 else "NO",
+                     p["allrun"]["load"] + "; " + sa["load"]))
     lines = ["# foamDEM benchmarks %s" % R["date"], "",
              "Host %s (%d cores); load (1/5/15 min) at start %s, at end %s." % (
                  R["host"], R["nproc"], R["loadStart"], R["loadEnd"]),

@@ -14,7 +14,7 @@ foreach(c zeroParticles outsideMesh outlet stiffE1e9 stiffE1e10 fineImplicit
           highRe denseRCP denseRCPDivided oneCell largeParticles
           largeParticlesOverride
           largeParticlesSmoothed
-          nanParticle nanFluid)
+          nanParticle nanFluid nanParticlePaired nanFluidPaired)
     add_test(NAME stability.${c}
         COMMAND ${STABILITY} ${c} ${FOAMDEM_WORK}/stability/${c})
     set_tests_properties(stability.${c} PROPERTIES

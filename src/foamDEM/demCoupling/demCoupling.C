@@ -408,6 +408,46 @@ void Foam::foamDEM::demCoupling::stopWithLastGoodState(const string& message)
     p_.write();
     alpha_.write();
 
+    // The DEM restart of the same step (failureDEMRestart lastGoodStep),
+    // where a write time's restart goes, so that the fluid fields and the
+    // DEM state of that time are found together
+    string paired;
+    if (restartEveryStep_)
+    {
+        const fileName target
+        (
+            demEngine::restartFile(runTime, runTime.timeName())
+        );
+        label slot = -1;
+        for (label k = 0; k < 2; ++k)
+        {
+            if (mag(stepRestartTime_[k] - runTime.value()) < 1e-6*dt)
+            {
+                slot = k;
+            }
+        }
+        if (slot < 0)
+        {
+            paired =
+                " (no DEM restart of that step: the failed step was the"
+                " run's first)";
+        }
+        else
+        {
+            if (Pstream::master() && !isFile(target))
+            {
+                const fileName from(stepRestart_[slot]);
+                mv(from, target);
+                mv
+                (
+                    demEngine::restartStepFile(from),
+                    demEngine::restartStepFile(target)
+                );
+            }
+            paired = ", the DEM state of that step to " + target;
+        }
+    }
+
     // The particles of the same step: a failure in the particles at t is
     // found before this step's copy (the newest is t - dt), a failure in
     // the fluid after it (the older one is t - dt). The same on all ranks.
@@ -436,8 +476,8 @@ void Foam::foamDEM::demCoupling::stopWithLastGoodState(const string& message)
         << message.c_str() << nl
         << "    The fluid fields" << particles.c_str()
         << " of the last good step were written to time "
-        << runTime.timeName() << "; the DEM state at the failure to "
-        << restart << '.' << nl
+        << runTime.timeName() << paired.c_str()
+        << "; the DEM state at the failure to " << restart << '.' << nl
         << "    Check the stability guard's report at start-up, and consider"
         << " a smaller time step or implicit coupling." << exit(FatalError);
 }
@@ -573,8 +613,31 @@ Foam::foamDEM::demCoupling::demCoupling
     keepLastGood_(dict_.getOrDefault("writeParticlesAtFailure", true)),
     goodNowTime_(-GREAT),
     goodBeforeTime_(-GREAT),
+    restartEveryStep_(false),
+    stepRestartTime_(-GREAT),
+    stepRestartSlot_(0),
     skipPush_(false)
 {
+    {
+        const wordList choices({"failedStep", "lastGoodStep"});
+        const word choice
+        (
+            dict_.getOrDefault<word>("failureDEMRestart", choices[0])
+        );
+        if (!choices.found(choice))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Unknown failureDEMRestart '" << choice << "' in "
+                << dict_.name() << nl << nl
+                << "Valid failureDEMRestart types :" << nl << choices
+                << exit(FatalIOError);
+        }
+        restartEveryStep_ = choice == "lastGoodStep";
+        const fileName dir(mesh_.time().globalPath()/"DEM"/"restart");
+        stepRestart_[0] = dir/"lastGoodStep.0.restart";
+        stepRestart_[1] = dir/"lastGoodStep.1.restart";
+    }
+
     Info<< nl << "foamDEM: CFD-DEM coupling, model type "
         << modelTypeNames[modelType_] << endl;
 
@@ -767,6 +830,31 @@ void Foam::foamDEM::demCoupling::readPressureGradient()
 }
 
 
+void Foam::foamDEM::demCoupling::writeStepRestart()
+{
+    // The slot not holding the newest: the older one is overwritten
+    const label slot = 1 - stepRestartSlot_;
+    const Time& runTime = mesh_.time();
+    if (writeDEMRestart_ && runTime.writeTime())
+    {
+        // This time's own restart is written already; nothing to move at
+        // a stop. Its name stands in the slot until the slot's next turn.
+        stepRestartTime_[slot] = runTime.value();
+        stepRestartSlot_ = slot;
+        return;
+    }
+    const fileName file
+    (
+        runTime.globalPath()/"DEM"/"restart"
+       /("lastGoodStep." + Foam::name(slot) + ".restart")
+    );
+    stepRestart_[slot] = file;
+    engine_->writeRestart(file);
+    stepRestartTime_[slot] = runTime.value();
+    stepRestartSlot_ = slot;
+}
+
+
 void Foam::foamDEM::demCoupling::writeDEMRestart()
 {
     const Time& runTime = mesh_.time();
@@ -930,6 +1018,11 @@ void Foam::foamDEM::demCoupling::update()
     {
         scopedTimer timer(timers_.output);
         writeDEMRestart();
+    }
+    if (restartEveryStep_)
+    {
+        scopedTimer timer(timers_.output);
+        writeStepRestart();
     }
     if (!reportedArrays_)
     {

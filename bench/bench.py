@@ -84,7 +84,7 @@ def say(*a):
     print(*a, flush=True)
 
 
-def run(cmd, cwd, log):
+def run(cmd, cwd, log, check=True):
     """Run cmd under /usr/bin/time -v; return wall [s], peak RSS [KiB], load,
     and the wall time of the solver's time loop (from its first 'Time = '
     line to its 'End' line, timestamped as the output streams in)."""
@@ -108,7 +108,9 @@ def run(cmd, cwd, log):
     text = open(os.path.join(cwd, log + ".time")).read()
     m = re.search(r"Maximum resident set size \(kbytes\): (\d+)", text)
     rss = int(m.group(1)) if m else float("nan")
-    if rc != 0:
+    if rc != 0 and not check:
+        say("  (exit %d: %s in %s; the caller checks the run)" % (rc, " ".join(cmd), cwd))
+    elif rc != 0:
         say("  FAILED (%d): %s in %s; tail of %s:" % (rc, " ".join(cmd), cwd, log))
         say("".join(open(os.path.join(cwd, log)).readlines()[-15:]))
         raise RuntimeError("command failed")
@@ -257,9 +259,13 @@ def pneumatic(work, np=2, full=False, end=None):
     cmd = ["./Allrun", "-np", str(np)] + ([] if full else ["-ci"])
     if end:
         cmd += ["-end", "%g" % end]
-    r = {"allrun": run(cmd, d, "log.Allrun.bench"), "np": np,
+    # Allrun's exit code includes the tutorial's own checks (postprocess.py),
+    # which a short window can fail: what counts here is the coupled run
+    r = {"allrun": run(cmd, d, "log.Allrun.bench", check=False), "np": np,
          "system": "full" if full else "CI"}
     log = open(os.path.join(d, "log.pisoDEMFoam")).read()
+    if not re.search(r"^End\s*$", log, re.M):
+        raise RuntimeError("pneumatic: the coupled run did not finish (%s/log.pisoDEMFoam)" % d)
     m = re.search(r"foamDEM timing \[s\]: DEM ([^,]+), coupling ([^ ]+)", log)
     r["dem"], r["coupling"] = float(m.group(1)), float(m.group(2))
     m = re.search(r"foamDEM run: .*wall ([0-9.]+) (min|h|s)", log)
@@ -413,6 +419,10 @@ def main():
     say("foamDEM bench: %d particles (%d layers), %d DEM steps of %g s, load %s"
         % (N, nLayers, steps, DEM_DT, R["loadStart"]))
 
+    def save():
+        # after each benchmark, so that a later failure keeps the earlier ones
+        json.dump(R, open(os.path.join(out, "raw.json"), "w"), indent=1)
+
     best = lambda runs: min(runs, key=lambda r: r["clock"] if "clock" in r else r["loop"])
     bestDem = lambda runs: min(runs, key=lambda r: r["timers"]["dem"])
     if only & set("12356"):
@@ -440,6 +450,7 @@ def main():
         R["coupledStill"], R["standaloneCoupled"] = bestDem(still), best(saf)
         R["coupledRuns"], R["standaloneRuns"] = runs, sa
         R["coupledStillRuns"], R["standaloneCoupledRuns"] = still, saf
+        save()
     if only & set("5"):
         d, _ = fluidbed(work, "coupled_np2", nLayers, steps, np=2, logExchange=True)
         runs = []
@@ -453,6 +464,7 @@ def main():
                         logExchange=True, heightLayers=nLayers)
         R["np2half"] = coupled(d, np=2)
         R["np2half"]["size"] = half * PER_LAYER
+        save()
     if only & set("6"):
         say("[6] memory references ...")
         mem = {}
@@ -468,13 +480,16 @@ def main():
         mem["piso_r3"] = run(["pisoFoam"], d, "log.pisoFoam")
         mem["cells_r1"], mem["cells_r3"] = c1, c3
         R["mem"] = mem
+        save()
     if only & set("4"):
         say("[4] DPMFoam Goldschmidt vs foamDEM, %g s simulated ..." % dpmTime)
         R["goldschmidt"] = goldschmidt(work, dpmTime)
+        save()
     if only & set("7"):
         for n in (1, 2):
             say("[7] particle output, cloud vs hdf5, np = %d ..." % n)
             R["output_np%d" % n] = outputs(work, nLayers, steps, n, repeat)
+            save()
     if only & set("8"):
         say("[8] densePneumaticConveying (%s), np = 2, coupled and standalone ..."
             % ("full system" if a.pneumatic_full else "CI section"))
@@ -505,9 +520,9 @@ def table(R, out):
         s = R["standalone"]
         thrS = s["particles"] * s["steps"] / s["loop"]
         thrD = N * steps / t["dem"]
-        rows.append(("2 total coupled / standalone LIGGGHTS (bed with gas)",
+        rows.append(("2 throughput ratio, total coupled / standalone LIGGGHTS (bed with gas)",
                      "%.2f (coupled %s p-steps/s over the whole time loop vs standalone %s, %.1f s loop); "
-                     "DEM part alone / standalone %.2f (%s p-steps/s; the bed fluidises, the standalone one does not)"
+                     "throughput ratio DEM part alone / standalone %.2f (%s p-steps/s; the bed fluidises, the standalone one does not)"
                      % (thr / thrS, fmt(thr), fmt(thrS), s["loop"], thrD / thrS, fmt(thrD)),
                      ">= 0.85", "yes" if thr / thrS >= 0.85 else "NO", s["load"]))
         if "coupledStill" in R:
@@ -516,7 +531,7 @@ def table(R, out):
             rows.append(("2b same, gas at rest in the coupled run",
                          "%.2f (DEM part %s p-steps/s; total coupled / standalone %.2f)"
                          % (thrDs / thrS, fmt(thrDs), N * steps / cs_["clock"] / thrS),
-                         ">= 0.8", "yes" if thrDs / thrS >= 0.8 else "NO", cs_["load"]))
+                         "-", "-", cs_["load"]))
         if "standaloneCoupled" in R:
             sf = R["standaloneCoupled"]
             thrF = sf["particles"] * steps / sf["loop"]
@@ -552,7 +567,7 @@ def table(R, out):
         sp = R["coupled"]["clock"] / R["np2"]["clock"]
         ex, exh = R["np2"].get("exchange", {}), R["np2half"].get("exchange", {})
         def exs(e):
-            return ", ".join("rank %d: %.0f particles, %.0f B/step (%.1f B/particle)"
+            return ", ".join("rank %s: %.0f particles, %.0f B/step (%.1f B/particle)"
                              % (k, v["particles"], v["bytesSent"],
                                 v["bytesSent"] / max(v["particles"], 1)) for k, v in e.items())
         cs = R["coupled"]["cpuProcess"] / (R["np2"]["cpuProcess"] / 2)
@@ -604,10 +619,10 @@ def table(R, out):
         p = R["pneumatic"]
         sa = p["standalone"]
         ratio = p["coupledWall"] / sa["loop"]
-        rows.append(("8 densePneumaticConveying coupled / standalone LIGGGHTS (np %d)" % p["np"],
+        rows.append(("8 time ratio, densePneumaticConveying coupled / standalone LIGGGHTS (np %d)" % p["np"],
                      "%.2f (coupled %.1f s of wall for %g s, %d DEM steps of %d particles: DEM %.1f s, "
                      "coupling %.1f s; standalone, same packing, script and coupling fixes, no gas: %.1f s; "
-                     "DEM part / standalone %.2f). Packing %.0f s of LIGGGHTS loop time. System: %s; "
+                     "time ratio DEM part / standalone %.2f). Packing %.0f s of LIGGGHTS loop time. System: %s; "
                      "the standalone slug rests where the coupled one moves"
                      % (ratio, p["coupledWall"], p["simTime"], p["steps"], p["particles"],
                         p["dem"], p["coupling"], sa["loop"], p["dem"] / sa["loop"],

@@ -14,7 +14,8 @@ foreach(c zeroParticles outsideMesh outlet stiffE1e9 stiffE1e10 fineImplicit
           highRe denseRCP denseRCPDivided oneCell largeParticles
           largeParticlesOverride
           largeParticlesSmoothed
-          nanParticle nanFluid nanParticlePaired nanFluidPaired)
+          nanParticle nanFluid nanParticlePaired nanFluidPaired
+          nanParticlePairedAtWrite nanParticlePairedFirstStep)
     add_test(NAME stability.${c}
         COMMAND ${STABILITY} ${c} ${FOAMDEM_WORK}/stability/${c})
     set_tests_properties(stability.${c} PROPERTIES

@@ -426,26 +426,41 @@ void Foam::foamDEM::demCoupling::stopWithLastGoodState(const string& message)
                 slot = k;
             }
         }
-        if (slot < 0)
+        bool found = false;
+        if (slot >= 0 && stepRestartIsWriteTime_[slot])
         {
-            paired =
-                " (no DEM restart of that step: the failed step was the"
-                " run's first)";
+            // The write time's own (purgeWrite may have removed it)
+            found = returnReduce
+            (
+                Pstream::master() && isFile(target), orOp<bool>()
+            );
         }
-        else
+        else if (slot >= 0)
         {
-            if (Pstream::master() && !isFile(target))
+            // Moved over whatever an earlier run left there
+            bool moved = true;
+            if (Pstream::master())
             {
                 const fileName from(stepRestart_[slot]);
-                mv(from, target);
+                moved = mv(from, target);
                 mv
                 (
                     demEngine::restartStepFile(from),
                     demEngine::restartStepFile(target)
                 );
             }
-            paired = ", the DEM state of that step to " + target;
+            // The other ranks wait for the move before the exit
+            found = returnReduce(Pstream::master() && moved, orOp<bool>());
         }
+        paired =
+            found
+          ? ", the DEM state of that step to " + target
+          : string
+            (
+                slot < 0
+              ? " (no DEM restart of that step: it was the run's start)"
+              : " (no DEM restart of that step: its file is gone)"
+            );
     }
 
     // The particles of the same step: a failure in the particles at t is
@@ -615,6 +630,7 @@ Foam::foamDEM::demCoupling::demCoupling
     goodBeforeTime_(-GREAT),
     restartEveryStep_(false),
     stepRestartTime_(-GREAT),
+    stepRestartIsWriteTime_(false),
     stepRestartSlot_(0),
     skipPush_(false)
 {
@@ -832,26 +848,33 @@ void Foam::foamDEM::demCoupling::readPressureGradient()
 
 void Foam::foamDEM::demCoupling::writeStepRestart()
 {
-    // The slot not holding the newest: the older one is overwritten
-    const label slot = 1 - stepRestartSlot_;
+    // The start time's DEM state is the run's start itself (a fresh run's
+    // packing, or the restart a continued run read): not kept, so that a
+    // stop in the first step leaves no restart at the start time, from
+    // which a rerun would continue
     const Time& runTime = mesh_.time();
-    if (writeDEMRestart_ && runTime.writeTime())
+    if (runTime.timeIndex() == runTime.startTimeIndex())
     {
-        // This time's own restart is written already; nothing to move at
-        // a stop. Its name stands in the slot until the slot's next turn.
-        stepRestartTime_[slot] = runTime.value();
-        stepRestartSlot_ = slot;
         return;
     }
-    const fileName file
-    (
-        runTime.globalPath()/"DEM"/"restart"
-       /("lastGoodStep." + Foam::name(slot) + ".restart")
-    );
-    stepRestart_[slot] = file;
-    engine_->writeRestart(file);
+
+    // The slot not holding the newest: the older one is overwritten
+    const label slot = 1 - stepRestartSlot_;
     stepRestartTime_[slot] = runTime.value();
     stepRestartSlot_ = slot;
+    stepRestartIsWriteTime_[slot] = writeDEMRestart_ && runTime.writeTime();
+    if (stepRestartIsWriteTime_[slot])
+    {
+        // This time's own restart is written already; nothing to move at
+        // a stop
+        stepRestart_[slot] =
+            demEngine::restartFile(runTime, runTime.timeName());
+        return;
+    }
+    stepRestart_[slot] =
+        runTime.globalPath()/"DEM"/"restart"
+       /("lastGoodStep." + Foam::name(slot) + ".restart");
+    engine_->writeRestart(stepRestart_[slot]);
 }
 
 

@@ -146,7 +146,18 @@ void Foam::foamDEM::undisturbedVelocity::read
             }
             cellU_[i] = U[c];
             p.fluidVelocity[i] = Ui.interpolate(p.position[i], c);
-            p.voidFraction[i] = alphai.interpolate(p.position[i], c);
+            // In [alphaMin, 1]: the tetrahedron search falls back to the
+            // nearest one (weights may be negative) for a position the
+            // locate's face-plane test put in a warped or snapped cell
+            p.voidFraction[i] = min
+            (
+                max
+                (
+                    alphai.interpolate(p.position[i], c),
+                    voidFraction_.alphaMin()
+                ),
+                scalar(1)
+            );
         }
         return;
     }

@@ -15,7 +15,8 @@ foreach(c zeroParticles outsideMesh outlet stiffE1e9 stiffE1e10 fineImplicit
           largeParticlesOverride
           largeParticlesSmoothed
           nanParticle nanFluid nanParticlePaired nanFluidPaired
-          nanParticlePairedAtWrite nanParticlePairedFirstStep)
+          nanParticlePairedAtWrite nanParticlePairedFirstStep
+          denseRCPCellPoint fineImplicitCellPoint)
     add_test(NAME stability.${c}
         COMMAND ${STABILITY} ${c} ${FOAMDEM_WORK}/stability/${c})
     set_tests_properties(stability.${c} PROPERTIES

@@ -395,7 +395,7 @@ def main():
     ap.add_argument("--repeat", type=int, help="runs of the timed np 1 / standalone / np 2 cases, best kept (default 2, --quick 1)")
     ap.add_argument("--only", default="", help="comma list of benchmarks 1-8 (default all)")
     ap.add_argument("--pneumatic-full", action="store_true",
-                    help="8: the tutorial's full system (32 194 particles; packing ~10 min on 2 cores) instead of its CI section")
+                    help="8: the tutorial's full system (32 194 particles; its packing took 226 s at np 2 in a sensitivity run) instead of its CI section")
     ap.add_argument("--pneumatic-end", type=float,
                     help="8: simulated time of the coupled run [s] (default: the CI run's 0.1 s; 0.05 s with --pneumatic-full)")
     ap.add_argument("--out", help="results directory (default bench/results/<date>)")

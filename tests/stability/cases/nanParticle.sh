@@ -8,11 +8,7 @@
 setup()
 {
     timing 1e-5 100 0.05 10
-    cat > DEM/extra <<'END'
-# (-1)^0.5 is NaN: only at step 2000
-variable        fnan equal (2*(step!=2000)-1)^0.5-1
-fix             nan all addforce 0 0 v_fnan
-END
+    nanAtStep 2000
 }
 run_case()
 {

@@ -3,16 +3,8 @@
 # start, whose DEM state is the start itself, so the message says there is
 # no DEM restart of it and none is left at DEM/restart/0.restart, from
 # which a rerun from the start would continue.
-setup()
-{
-    timing 1e-5 100 0.05 10
-    cat > DEM/extra <<'END'
-# (-1)^0.5 is NaN: only at step 100
-variable        fnan equal (2*(step!=100)-1)^0.5-1
-fix             nan all addforce 0 0 v_fnan
-END
-    fd $cp -entry failureDEMRestart -add lastGoodStep
-}
+NAN_STEP=100
+. "$here/cases/nanParticlePaired.sh"
 run_case()
 {
     expectFailure 60 \

@@ -5,7 +5,8 @@ step whose fluid fields it writes (demCoupling::stopWithLastGoodState).
 
     checkPairedRestart.py CASE GOODTIME STEP
 
-CASE/DEM/restart/GOODTIME.restart must exist beside CASE/GOODTIME/U;
+CASE/DEM/restart/GOODTIME.restart must exist beside CASE/GOODTIME/U (a
+parallel run's CASE/processor*/GOODTIME/U);
 LIGGGHTS (liggghts, serial) reads it and must find itself at DEM step STEP
 with every particle of the DEM's own dump CASE/DEM/post/particles.dump at
 STEP, at the same velocity to 1e-10 (relative). The .step file beside the
@@ -29,7 +30,12 @@ def main():
         sys.exit(__doc__)
     case, good, step = os.path.abspath(sys.argv[1]), sys.argv[2], int(sys.argv[3])
     restart = os.path.join(case, "DEM", "restart", good + ".restart")
-    for f in (restart, os.path.join(case, good, "U")):
+    fields = [os.path.join(case, good, "U")]
+    if os.path.isdir(os.path.join(case, "processor0")):
+        # a parallel run writes the fields per processor
+        fields = [os.path.join(case, p, good, "U") for p in sorted(os.listdir(case))
+                  if p.startswith("processor")]
+    for f in [restart] + fields:
         if not os.path.isfile(f):
             print("FAIL: %s not written" % f)
             return 1

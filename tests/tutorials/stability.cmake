@@ -27,7 +27,8 @@ endforeach()
 # decomposition, an error met by one rank only, and 800 particles leaving
 # through an outlet from both ranks (outletParallel, ~45 s; seen failing
 # with the engine's particle count frozen at its first value)
-foreach(c rankMismatch oneRankError oneRankErrorMaster outletParallel)
+foreach(c rankMismatch oneRankError oneRankErrorMaster outletParallel
+          nanParticlePairedParallel)
     add_test(NAME stability.${c}
         COMMAND ${STABILITY} ${c} ${FOAMDEM_WORK}/stability/${c})
     set_tests_properties(stability.${c} PROPERTIES

@@ -649,9 +649,6 @@ Foam::foamDEM::demCoupling::demCoupling
                 << exit(FatalIOError);
         }
         restartEveryStep_ = choice == "lastGoodStep";
-        const fileName dir(mesh_.time().globalPath()/"DEM"/"restart");
-        stepRestart_[0] = dir/"lastGoodStep.0.restart";
-        stepRestart_[1] = dir/"lastGoodStep.1.restart";
     }
 
     Info<< nl << "foamDEM: CFD-DEM coupling, model type "

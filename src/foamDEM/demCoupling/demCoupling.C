@@ -427,30 +427,27 @@ void Foam::foamDEM::demCoupling::stopWithLastGoodState(const string& message)
             }
         }
         bool found = false;
-        if (slot >= 0 && stepRestartIsWriteTime_[slot])
+        if (slot >= 0)
         {
-            // The write time's own (purgeWrite may have removed it)
-            found = returnReduce
-            (
-                Pstream::master() && isFile(target), orOp<bool>()
-            );
-        }
-        else if (slot >= 0)
-        {
-            // Moved over whatever an earlier run left there
-            bool moved = true;
+            // A step's own file is moved there, over whatever an earlier
+            // run left; a write time's is the target itself (gone if
+            // purgeWrite removed it)
+            bool there = false;
             if (Pstream::master())
             {
                 const fileName from(stepRestart_[slot]);
-                moved = mv(from, target);
-                mv
-                (
-                    demEngine::restartStepFile(from),
-                    demEngine::restartStepFile(target)
-                );
+                there = from == target ? isFile(target) : mv(from, target);
+                if (from != target)
+                {
+                    mv
+                    (
+                        demEngine::restartStepFile(from),
+                        demEngine::restartStepFile(target)
+                    );
+                }
             }
             // The other ranks wait for the move before the exit
-            found = returnReduce(Pstream::master() && moved, orOp<bool>());
+            found = returnReduce(there, orOp<bool>());
         }
         paired =
             found
@@ -630,7 +627,6 @@ Foam::foamDEM::demCoupling::demCoupling
     goodBeforeTime_(-GREAT),
     restartEveryStep_(false),
     stepRestartTime_(-GREAT),
-    stepRestartIsWriteTime_(false),
     stepRestartSlot_(0),
     skipPush_(false)
 {
@@ -859,8 +855,7 @@ void Foam::foamDEM::demCoupling::writeStepRestart()
     const label slot = 1 - stepRestartSlot_;
     stepRestartTime_[slot] = runTime.value();
     stepRestartSlot_ = slot;
-    stepRestartIsWriteTime_[slot] = writeDEMRestart_ && runTime.writeTime();
-    if (stepRestartIsWriteTime_[slot])
+    if (writeDEMRestart_ && runTime.writeTime())
     {
         // This time's own restart is written already; nothing to move at
         // a stop

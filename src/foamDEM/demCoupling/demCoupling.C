@@ -312,7 +312,17 @@ void Foam::foamDEM::demCoupling::reportMomentumBalance() const
 void Foam::foamDEM::demCoupling::checkParticlesFinite()
 {
     const particleData& p = particles_;
-    auto bad = [](const auto& x) { return !std::isfinite(mag(x)); };
+    // Component by component (no square root per particle and quantity)
+    struct finiteCheck
+    {
+        bool operator()(const scalar x) const { return !std::isfinite(x); }
+        bool operator()(const vector& x) const
+        {
+            return
+                !std::isfinite(x.x()) || !std::isfinite(x.y())
+             || !std::isfinite(x.z());
+        }
+    } bad;
 
     string found;
     forAll(p.cell, i)

@@ -17,12 +17,6 @@ const Foam::Enum<Foam::foamDEM::quantity> Foam::foamDEM::exchangePlan::names
 });
 
 
-bool Foam::foamDEM::exchangePlan::has(quantity q) const
-{
-    return requests_.found(names[q]);
-}
-
-
 void Foam::foamDEM::exchangePlan::need(quantity q, const word& who)
 {
     const word& key = names[q];
@@ -30,6 +24,7 @@ void Foam::foamDEM::exchangePlan::need(quantity q, const word& who)
     {
         requests_.insert(key, wordList());
         order_.append(key);
+        mask_ |= 1u << unsigned(q);
     }
     wordList& models = requests_[key];
     if (!models.found(who))

@@ -609,8 +609,106 @@ bool usesDivided(const word& label)
 
 // * * * * * * * * * * * * * * * * * Suites  * * * * * * * * * * * * * * * //
 
+//- One hinted locate over coupling steps as the library drives it: the
+//  step's first call on the DEM's list (whose hints are kept by list
+//  position), later calls on other particles (as the parallel transfer
+//  locates queries and arrivals, hinted by DEM id); between steps the
+//  particles move by up to a cell and the list is reordered, as a DEM
+//  sort or exchange reorders it. Every cell must be findCell's (the hints
+//  only choose where the search starts).
+void hintSteps(const fvMesh& mesh)
+{
+    const scalar h = typicalCellSize(mesh);
+    Random rnd(7654321);
+    const boundBox bb(mesh.bounds());
+    const label n = 3000;
+
+    // Positions well inside the box, by DEM id
+    List<point> x(n);
+    forAll(x, i)
+    {
+        x[i] = bb.min() + 0.1*bb.span()
+          + cmptMultiply(0.8*rnd.sample01<vector>(), bb.span());
+    }
+
+    dictionary dict;
+    dict.add("locate", word("hinted"));
+    autoPtr<locateModel> loc(locateModel::New(dict, mesh));
+
+    labelList order(identity(n));
+    label nWrong = 0, nChecked = 0;
+    auto checkCells = [&](const particleData& p)
+    {
+        forAll(p.cell, i)
+        {
+            const label c = mesh.findCell(p.position[i], polyMesh::CELL_TETS);
+            if (c >= 0 && p.cell[i] != c) ++nWrong;
+            ++nChecked;
+        }
+    };
+
+    for (label step = 0; step < 4; ++step)
+    {
+        loc->beginStep();
+
+        // The DEM's list: ids in 'order', minus the last tenth (on another
+        // rank this step)
+        const label nMain = n - n/10;
+        particleData p;
+        p.resize(nMain, testPlan());
+        forAll(p.position, k)
+        {
+            p.id[k] = order[k];
+            p.position[k] = x[order[k]];
+            p.radius[k] = 0.1*h;
+        }
+        p.velocity = Zero;
+        loc->locate(p);
+        checkCells(p);
+
+        // The rest, located in a later call by id (queries, arrivals)
+        particleData q;
+        q.resize(n - nMain, testPlan());
+        forAll(q.position, k)
+        {
+            q.id[k] = order[nMain + k];
+            q.position[k] = x[order[nMain + k]];
+            q.radius[k] = 0.1*h;
+        }
+        q.velocity = Zero;
+        loc->locate(q);
+        checkCells(q);
+
+        // Next step: move by up to a cell, reorder (step 2 keeps the order)
+        forAll(x, i)
+        {
+            x[i] += h*(2*rnd.sample01<vector>() - vector::one);
+            x[i] = max(min(x[i], bb.max() - 0.01*bb.span()),
+                       bb.min() + 0.01*bb.span());
+        }
+        if (step != 1)
+        {
+            for (label i = n - 1; i > 0; --i)
+            {
+                std::swap(order[i], order[rnd.position<label>(0, i)]);
+            }
+        }
+    }
+    Info<< "hinted locate over 4 steps (moved, reordered, split calls): "
+        << nWrong << " of " << nChecked << " cells differ from findCell" << nl;
+    check
+    (
+        nWrong == 0 && nChecked == 4*n,
+        str("locate hints: every cell findCell's over reordered steps (",
+            nWrong, " of ", nChecked, " differ)")
+    );
+}
+
+
 void boxSuite(const fvMesh& mesh)
 {
+    hintSteps(mesh);
+
     const scalar h = typicalCellSize(mesh);
     volScalarField alpha(makeAlpha(mesh, "alpha"));
 

@@ -19,28 +19,83 @@ Foam::foamDEM::hintedLocate::hintedLocate
 :
     locateModel(mesh),
     search_(mesh, polyMesh::CELL_TETS),
+    mainMapBuilt_(false),
+    prevMainMapBuilt_(false),
+    expectMain_(true),
+    convex_(mesh.nCells(), true),
     nHintHits_(0),
     nNeighbourHits_(0),
     nTreeSearches_(0)
-{}
+{
+    const pointField& pts = mesh.points();
+    const labelListList& cellPoints = mesh.cellPoints();
+    const vectorField& Cf = mesh.faceCentres();
+    const vectorField& Sf = mesh.faceAreas();
+    const labelList& own = mesh.faceOwner();
+    label nConcave = 0;
+    forAll(convex_, c)
+    {
+        const scalar tol = 1e-6*Foam::cbrt(mesh.cellVolumes()[c]);
+        for (const label f : mesh.cells()[c])
+        {
+            const vector n = (own[f] == c ? 1 : -1)*Sf[f]/mag(Sf[f]);
+            for (const label pt : cellPoints[c])
+            {
+                if (((pts[pt] - Cf[f]) & n) > tol)
+                {
+                    convex_[c] = false;
+                    break;
+                }
+            }
+            if (!convex_[c]) break;
+        }
+        nConcave += !convex_[c];
+    }
+    if (debug)
+    {
+        Info<< "hintedLocate: " << nConcave << " of " << mesh.nCells()
+            << " cells not convex (tested by tetrahedra)" << endl;
+    }
+}
 
 
 bool Foam::foamDEM::hintedLocate::inCell(const point& p, label celli) const
 {
     // Face-plane test: exact for convex cells and several times cheaper
-    // than the tetrahedral one, which the octree search keeps
-    return mesh_.pointInCell(p, celli, polyMesh::FACE_PLANES);
+    // than the tetrahedral one, which the octree search uses and which
+    // cells that are not convex need
+    return mesh_.pointInCell
+    (
+        p, celli,
+        convex_[celli] ? polyMesh::FACE_PLANES : polyMesh::CELL_TETS
+    );
 }
 
 
 Foam::label Foam::foamDEM::hintedLocate::hint(label id) const
 {
-    auto iter = current_.cfind(id);
-    if (iter.found())
+    auto build = [](Map<label>& m, bool& built, const labelList& ids,
+                    const labelList& cells)
     {
-        return *iter;
-    }
-    return previous_.lookup(id, -1);
+        if (built) return;
+        m.clear();
+        m.resize(2*ids.size());
+        forAll(ids, i)
+        {
+            if (cells[i] >= 0) m.set(ids[i], cells[i]);
+        }
+        built = true;
+    };
+
+    auto iter = current_.cfind(id);
+    if (iter.found()) return *iter;
+    build(mainMap_, mainMapBuilt_, mainIds_, mainCells_);
+    iter = mainMap_.cfind(id);
+    if (iter.found()) return *iter;
+    iter = previous_.cfind(id);
+    if (iter.found()) return *iter;
+    build(prevMainMap_, prevMainMapBuilt_, prevMainIds_, prevMainCells_);
+    return prevMainMap_.lookup(id, -1);
 }
 
 
@@ -48,6 +103,13 @@ void Foam::foamDEM::hintedLocate::beginStep()
 {
     previous_.transfer(current_);
     current_.clear();
+    prevMainIds_.transfer(mainIds_);
+    prevMainCells_.transfer(mainCells_);
+    std::swap(prevMainMap_, mainMap_);
+    prevMainMapBuilt_ = mainMapBuilt_;
+    mainMap_.clear();
+    mainMapBuilt_ = false;
+    expectMain_ = true;
 }
 
 
@@ -63,10 +125,35 @@ Foam::label Foam::foamDEM::hintedLocate::locate(particleData& p)
     const labelListList& cellCells = mesh_.cellCells();
     label nOutside = 0;
 
+    // The step's first call keeps its result by position (see mainIds_)
+    const bool main = expectMain_;
+    expectMain_ = false;
+    if (main)
+    {
+        mainIds_.setSize(p.size());
+        mainCells_.setSize(p.size());
+        // Being filled: not a source of hints until the loop is done
+        mainMap_.clear();
+        mainMapBuilt_ = true;
+    }
+
     forAll(p.cell, i)
     {
         const point& x = p.position[i];
-        const label hint = this->hint(p.id[i]);
+        const label id = p.id[i];
+        label hint = -1;
+        if
+        (
+            main && i < prevMainIds_.size() && prevMainIds_[i] == id
+         && prevMainCells_[i] >= 0
+        )
+        {
+            hint = prevMainCells_[i];
+        }
+        else
+        {
+            hint = this->hint(id);
+        }
         label celli = -1;
 
         if (hint >= 0 && inCell(x, hint))
@@ -95,19 +182,29 @@ Foam::label Foam::foamDEM::hintedLocate::locate(particleData& p)
         p.cell[i] = celli;
         if (debug > 1)
         {
-            Pout<< "hintedLocate: particle " << p.id[i] << " at " << x
+            Pout<< "hintedLocate: particle " << id << " at " << x
                 << " hint " << hint << " -> cell " << celli
                 << (celli >= 0 ? " centre " : "")
                 << (celli >= 0 ? mesh_.cellCentres()[celli] : point::zero) << endl;
         }
-        if (celli >= 0)
+        if (main)
         {
-            current_.set(p.id[i], celli);
+            mainIds_[i] = id;
+            mainCells_[i] = celli;
         }
-        else
+        else if (celli >= 0)
+        {
+            current_.set(id, celli);
+        }
+        if (celli < 0)
         {
             ++nOutside;
         }
+    }
+
+    if (main)
+    {
+        mainMapBuilt_ = false;
     }
 
     if (debug)

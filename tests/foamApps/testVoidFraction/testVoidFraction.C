@@ -23,7 +23,9 @@ Description
     (the box decomposed; processor patches), badInput (FatalIOError on
     inconsistent keys), snapped (a snappyHexMesh mesh, the
     cohesiveBedEvacuation tutorial's: hinted locate against findCell with
-    tetrahedra at 20 000 random points, then the box checks), shapes,
+    tetrahedra at 20 000 random points, then the box checks), concave
+    (an L-shaped duct: divided's sub-volume points past its re-entrant
+    edge against findCell), shapes,
     interpolation (couplingKernel cellPoint: a linear U and eps read
     exactly at the particles on a uniform mesh, serial and decomposed; the
     cell kernel's read off it; the implicit coupling's explicit share
@@ -852,6 +854,82 @@ void boxSuite(const fvMesh& mesh)
 }
 
 
+//- divided's sub-volume points in a concave domain (lshape: an L-shaped
+//  duct of convex hexahedra), located by its face walks (a point that
+//  leaves through a wall: its test against the mesh's reach past that
+//  wall, else an octree search) against OpenFOAM's findCell (CELL_TETS)
+//  at each point; points outside the mesh count in the particle's cell,
+//  as the model defines. Particles of radius 1.5 cells within 2 mm of the
+//  re-entrant edge (x = z = 5 mm), so that points leave through a wall
+//  next to the edge and lie in the other arm.
+void concaveSuite(const fvMesh& mesh)
+{
+    autoPtr<voidFractionModel> model =
+        voidFractionModel::New(couplingDict("divided", dictionary()), mesh);
+    const List<vector>& u =
+        refCast<const dividedVoidFraction>(model()).unitPoints();
+
+    const scalar h = typicalCellSize(mesh);
+    Random rnd(24681357);
+    particleSet s;
+    while (s.size() < 2000)
+    {
+        const point x
+        (
+            0.003 + 0.004*rnd.sample01<scalar>(),
+            0.004*rnd.sample01<scalar>(),
+            0.003 + 0.004*rnd.sample01<scalar>()
+        );
+        if (mesh.findCell(x, polyMesh::CELL_TETS) < 0) continue;
+        s.add(x, 1.5*h);
+    }
+    const particleData p(makeParticles(mesh, s));
+    particleCellWeights w;
+    model->distribute(p, w);
+
+    label nDiffer = 0, nPast = 0;
+    forAll(p.cell, i)
+    {
+        // The reference: each point's cell by findCell, own if outside
+        Map<scalar> ref;
+        bool past = false;
+        forAll(u, j)
+        {
+            const point y = p.position[i] + p.radius[i]*u[j];
+            label c = j == 0 ? p.cell[i] : mesh.findCell(y, polyMesh::CELL_TETS);
+            if (c < 0)
+            {
+                c = p.cell[i];
+                past = true;
+            }
+            ref(c) += 1.0/u.size();
+        }
+        nPast += past;
+        Map<scalar> got;
+        for (label k = w.start(i); k < w.end(i); ++k)
+        {
+            got(w.cell(k)) += w.weight(k);
+        }
+        bool same = got.size() == ref.size();
+        forAllConstIters(ref, iter)
+        {
+            same = same && mag(got.lookup(iter.key(), -1) - iter.val()) < 1e-12;
+        }
+        nDiffer += !same;
+    }
+    Info<< "divided: " << p.size() << " particles, " << nPast
+        << " reaching outside the mesh; sub-volume cells differ from"
+        << " findCell's for " << nDiffer << nl;
+    check(nPast > p.size()/10, str("divided: ", nPast, " particles reach past a wall"));
+    check
+    (
+        nDiffer == 0,
+        str("divided: sub-volume cells as findCell's for every particle (",
+            nDiffer, " of ", p.size(), " differ)")
+    );
+}
+
+
 //- Locate on a snapped mesh (hexahedra cut at the walls, prisms and
 //  polyhedra, some not convex): hinted locate, whose face-plane tests are
 //  exact only for convex cells, against OpenFOAM's findCell with the cells
@@ -1608,7 +1686,7 @@ void interpolationSuite(const fvMesh& mesh)
 int main(int argc, char *argv[])
 {
     argList::addNote("Tests of the void fraction models and averaging");
-    argList::addOption("suite", "name", "box, snapped, periodic, parallel, badInput, shapes, interpolation or timing");
+    argList::addOption("suite", "name", "box, snapped, periodic, parallel, badInput, shapes, interpolation, concave or timing");
     argList::addOption("nParticles", "N", "timing: number of particles");
     argList::addOption("radius", "r", "timing: radius in cell sizes");
 
@@ -1635,6 +1713,10 @@ int main(int argc, char *argv[])
     else if (suite == "parallel")
     {
         parallelSuite(mesh);
+    }
+    else if (suite == "concave")
+    {
+        concaveSuite(mesh);
     }
     else if (suite == "timing")
     {

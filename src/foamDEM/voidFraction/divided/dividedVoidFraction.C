@@ -4,6 +4,7 @@
 #include "processorPolyPatch.H"
 #include "FixedList.H"
 #include "addToRunTimeSelectionTable.H"
+#include <vector>
 
 namespace Foam
 {
@@ -195,6 +196,13 @@ Foam::label Foam::foamDEM::dividedVoidFraction::locatePoint
             ++nAtWalls_;
             return celli;
         }
+        if (beyondMesh(exitFace, exitDistance))
+        {
+            // What the octree search would find: no cell
+            ++nBeyondMesh_;
+            ++nOutside_;
+            return own;
+        }
         break;
     }
 
@@ -206,6 +214,57 @@ Foam::label Foam::foamDEM::dividedVoidFraction::locatePoint
     }
     ++nOutside_;
     return own;
+}
+
+
+Foam::labelList Foam::foamDEM::dividedVoidFraction::makeBoundaryPoints
+(
+    const polyMesh& mesh
+)
+{
+    std::vector<char> onBoundary(std::size_t(mesh.nPoints()), 0);
+    const faceList& faces = mesh.faces();
+    for (label f = mesh.nInternalFaces(); f < mesh.nFaces(); ++f)
+    {
+        for (const label pt : faces[f])
+        {
+            onBoundary[pt] = 1;
+        }
+    }
+    label n = 0;
+    for (const char b : onBoundary) n += b;
+    labelList pts(n);
+    n = 0;
+    for (label pt = 0; pt < mesh.nPoints(); ++pt)
+    {
+        if (onBoundary[pt]) pts[n++] = pt;
+    }
+    return pts;
+}
+
+
+bool Foam::foamDEM::dividedVoidFraction::beyondMesh(label f, scalar d) const
+{
+    // Only where the boundary's points are few enough to scan once per
+    // face a walk leaves through (the scan is O(boundary points))
+    if (boundaryPoints_.size() > 200000)
+    {
+        return false;
+    }
+    scalar& reach = boundaryReach_[f - mesh_.nInternalFaces()];
+    if (reach < 0)
+    {
+        const pointField& pts = mesh_.points();
+        const point& c = mesh_.faceCentres()[f];
+        const vector& n = unitNormals_[f];
+        reach = 0;
+        for (const label pt : boundaryPoints_)
+        {
+            reach = max(reach, (pts[pt] - c) & n);
+        }
+    }
+    // Ahead of every point of the mesh (with a margin for round-off)
+    return d > reach + 1e-9*Foam::sqrt(mag(mesh_.faceAreas()[f]));
 }
 
 
@@ -223,12 +282,15 @@ Foam::foamDEM::dividedVoidFraction::dividedVoidFraction
     maxWalkSteps_(dict.getOrDefault<label>("maxWalkSteps", 100)),
     unitNormals_(mesh.faceAreas()/mag(mesh.faceAreas())),
     search_(mesh, polyMesh::CELL_TETS),
+    boundaryReach_(mesh.nBoundaryFaces(), -1),
+    boundaryPoints_(makeBoundaryPoints(mesh)),
     nFastParticles_(0),
     nWalkSteps_(0),
     nTreeSearches_(0),
     nPeriodicCrossings_(0),
     nOutside_(0),
-    nAtWalls_(0)
+    nAtWalls_(0),
+    nBeyondMesh_(0)
 {
     namespace corr = ::foamDEM::correlations;
     const label nTarget = dict.getOrDefault<label>("shapeSubVolumes", 40);
@@ -415,6 +477,8 @@ void Foam::foamDEM::dividedVoidFraction::distribute
             << ", tree searches " << nTreeSearches_ << ", cyclic crossings "
             << nPeriodicCrossings_ << ", points outside to own cell "
             << nOutside_ << ", shape points beyond a wall to the wall cell "
-            << nAtWalls_ << endl;
+            << nAtWalls_ << ", of the points outside, beyond the mesh's"
+            << " reach past the wall they left by (no octree search) "
+            << nBeyondMesh_ << endl;
     }
 }

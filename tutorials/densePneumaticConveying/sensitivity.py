@@ -79,6 +79,9 @@ or one that foamDEM makes differently):
                 (axialFillToCapacity 1) and thinned at random to
                 nParticles: the reference's count in its wall, over the
                 whole shape
+  axialFillSettle25
+                axialFillThinned settled for 2.5 s under -y (settleTime;
+                the reference's settling time) instead of 0.5 s
   axialFillCaseFriction
                 axialFillFacetedWall with the case's friction during the
                 fill (fillCaseFriction 1), as the reference loaded with its
@@ -253,6 +256,12 @@ def v_axialFillThinned(case):
     parameter(case, "axialFillToCapacity", 1)
 
 
+def v_axialFillSettle25(case):
+    v_axialFillThinned(case)
+    # the reference settled its loaded slug for about 2.5 s under -y
+    parameter(case, "settleTime", "2.5")
+
+
 VARIANTS = [
     ("likeForLike", "the tutorial: wall friction 0.343 (harmonic mean)", None),
     ("friction04", "particle-wall friction 0.4 (the wall's own value)", v_friction04),
@@ -270,6 +279,7 @@ VARIANTS = [
     ("axialFill", "the slug packed along the pipe (gravity -x against an end wall, under a lid over the layer; 2 s), as the reference loaded it", v_axialFill),
     ("axialFillFacetedWall", "axialFill inside the faceted DEM wall: the reference's loading, DEM wall and particle count", v_axialFillFacetedWall),
     ("axialFillThinned", "axialFillFacetedWall filled to capacity (35 339) and thinned at random to 32 194: the reference's particle count in its wall, spread over the whole shape", v_axialFillThinned),
+    ("axialFillSettle25", "axialFillThinned settled for 2.5 s under -y (the reference's settling time) instead of 0.5 s", v_axialFillSettle25),
     ("axialFillCaseFriction", "axialFillFacetedWall with the case's friction during the fill (particle 0.3, wall 0.343, rolling 0.2) instead of 0.1 without rolling", v_axialFillCaseFriction),
 ]
 

@@ -27,25 +27,33 @@ Foam::foamDEM::hintedLocate::hintedLocate
     nNeighbourHits_(0),
     nTreeSearches_(0)
 {
+    // Each face's points against each face plane of the cell (the cell's
+    // points through its faces: no cellPoints addressing kept on the mesh)
     const pointField& pts = mesh.points();
-    const labelListList& cellPoints = mesh.cellPoints();
+    const faceList& faces = mesh.faces();
     const vectorField& Cf = mesh.faceCentres();
     const vectorField& Sf = mesh.faceAreas();
     const labelList& own = mesh.faceOwner();
     label nConcave = 0;
     forAll(convex_, c)
     {
-        const scalar tol = 1e-6*Foam::cbrt(mesh.cellVolumes()[c]);
-        for (const label f : mesh.cells()[c])
+        const cell& cFaces = mesh.cells()[c];
+        const scalar tol = 1e-6*Foam::cbrt(mag(mesh.cellVolumes()[c]));
+        for (const label f : cFaces)
         {
             const vector n = (own[f] == c ? 1 : -1)*Sf[f]/mag(Sf[f]);
-            for (const label pt : cellPoints[c])
+            for (const label g : cFaces)
             {
-                if (((pts[pt] - Cf[f]) & n) > tol)
+                if (g == f) continue;
+                for (const label pt : faces[g])
                 {
-                    convex_[c] = false;
-                    break;
+                    if (((pts[pt] - Cf[f]) & n) > tol)
+                    {
+                        convex_[c] = false;
+                        break;
+                    }
                 }
+                if (!convex_[c]) break;
             }
             if (!convex_[c]) break;
         }

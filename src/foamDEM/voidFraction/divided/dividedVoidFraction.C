@@ -247,7 +247,7 @@ bool Foam::foamDEM::dividedVoidFraction::beyondMesh(label f, scalar d) const
 {
     // Only where the boundary's points are few enough to scan once per
     // face a walk leaves through (the scan is O(boundary points))
-    if (boundaryPoints_.size() > 200000)
+    if (boundaryPoints_.size() + mesh_.nCells() > 200000)
     {
         return false;
     }
@@ -262,9 +262,14 @@ bool Foam::foamDEM::dividedVoidFraction::beyondMesh(label f, scalar d) const
         {
             reach = max(reach, (pts[pt] - c) & n);
         }
+        for (const point& cc : mesh_.cellCentres())
+        {
+            reach = max(reach, (cc - c) & n);
+        }
     }
     // Ahead of every point of the mesh (with a margin for round-off)
-    return d > reach + 1e-9*Foam::sqrt(mag(mesh_.faceAreas()[f]));
+    return
+        d > reach + max(1e-9*Foam::sqrt(mag(mesh_.faceAreas()[f])), 10*SMALL);
 }
 
 

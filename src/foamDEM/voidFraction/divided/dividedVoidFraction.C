@@ -4,7 +4,7 @@
 #include "processorPolyPatch.H"
 #include "FixedList.H"
 #include "addToRunTimeSelectionTable.H"
-#include <vector>
+#include "primitivePatch.H"
 
 namespace Foam
 {
@@ -217,32 +217,6 @@ Foam::label Foam::foamDEM::dividedVoidFraction::locatePoint
 }
 
 
-Foam::labelList Foam::foamDEM::dividedVoidFraction::makeBoundaryPoints
-(
-    const polyMesh& mesh
-)
-{
-    std::vector<char> onBoundary(std::size_t(mesh.nPoints()), 0);
-    const faceList& faces = mesh.faces();
-    for (label f = mesh.nInternalFaces(); f < mesh.nFaces(); ++f)
-    {
-        for (const label pt : faces[f])
-        {
-            onBoundary[pt] = 1;
-        }
-    }
-    label n = 0;
-    for (const char b : onBoundary) n += b;
-    labelList pts(n);
-    n = 0;
-    for (label pt = 0; pt < mesh.nPoints(); ++pt)
-    {
-        if (onBoundary[pt]) pts[n++] = pt;
-    }
-    return pts;
-}
-
-
 bool Foam::foamDEM::dividedVoidFraction::beyondMesh(label f, scalar d) const
 {
     // Only where the boundary's points are few enough to scan once per
@@ -288,7 +262,18 @@ Foam::foamDEM::dividedVoidFraction::dividedVoidFraction
     unitNormals_(mesh.faceAreas()/mag(mesh.faceAreas())),
     search_(mesh, polyMesh::CELL_TETS),
     boundaryReach_(mesh.nBoundaryFaces(), -1),
-    boundaryPoints_(makeBoundaryPoints(mesh)),
+    boundaryPoints_
+    (
+        // The points of all boundary faces, as one patch's mesh points
+        primitivePatch
+        (
+            SubList<face>
+            (
+                mesh.faces(), mesh.nBoundaryFaces(), mesh.nInternalFaces()
+            ),
+            mesh.points()
+        ).meshPoints()
+    ),
     nFastParticles_(0),
     nWalkSteps_(0),
     nTreeSearches_(0),

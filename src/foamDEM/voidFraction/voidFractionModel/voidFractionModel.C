@@ -155,89 +155,104 @@ void Foam::foamDEM::voidFractionModel::setFromSolidFraction
         }
     }
 
-    // Pass the excess volume to face neighbours in proportion to their
-    // room. What does not fit overfills the neighbours further out (by
-    // layer from the clipped cells, so nothing flows back) and moves on in
-    // the next sweep: one layer per sweep.
+    // Each connected group of clipped cells (face neighbours) gives its
+    // excess to the layers of cells around it, nearest layer first: a
+    // layer with room for what is left takes it in proportion to each
+    // cell's room; one without is filled and the rest goes on to the next
+    // layer, up to maxRedistributionSweeps layers. What is left after that
+    // (or when no layer is left) stays in the group's cells and is lost
+    // at the bound below. A cell is visited once per group, so the excess
+    // never flows back.
     if (redistributeClipped_ && full.size())
     {
         const labelListList& cellCells = mesh_.cellCells();
-        labelList layer(mesh_.nCells(), -1);
-        for (const label celli : full)
-        {
-            layer[celli] = 0;
-        }
-        boolList queued(mesh_.nCells(), false);
+        labelList visited(mesh_.nCells(), -1);
+        boolList grouped(mesh_.nCells(), false);
+        DynamicList<label> group;
+        DynamicList<label> front;
         DynamicList<label> next;
-        DynamicList<label> targets;
-        for
-        (
-            label sweep = 0;
-            sweep < maxRedistributionSweeps_ && full.size();
-            ++sweep
-        )
+        label groupi = 0;
+        for (const label seed : full)
         {
-            next.clear();
-            for (const label celli : full)
+            if (grouped[seed])
             {
-                const labelList& nbrs = cellCells[celli];
-                if (s[celli] <= solidMax || nbrs.empty())
-                {
-                    continue;
-                }
-                const scalar excess = (s[celli] - solidMax)*V[celli];
-                scalar room = 0;
-                for (const label n : nbrs)
-                {
-                    room += max(solidMax - s[n], scalar(0))*V[n];
-                }
+                continue;
+            }
 
-                s[celli] = solidMax;
-                if (room >= excess)
+            // The group: clipped cells connected to the seed
+            group.clear();
+            group.append(seed);
+            visited[seed] = groupi;
+            grouped[seed] = true;
+            for (label k = 0; k < group.size(); ++k)
+            {
+                for (const label n : cellCells[group[k]])
                 {
-                    for (const label n : nbrs)
+                    if (!grouped[n] && s[n] > solidMax)
+                    {
+                        visited[n] = groupi;
+                        grouped[n] = true;
+                        group.append(n);
+                    }
+                }
+            }
+            scalar excess = 0;
+            for (const label celli : group)
+            {
+                excess += (s[celli] - solidMax)*V[celli];
+            }
+
+            // Layers around it
+            front = group;
+            for
+            (
+                label layer = 0;
+                layer < maxRedistributionSweeps_ && excess > 0
+             && front.size();
+                ++layer
+            )
+            {
+                next.clear();
+                scalar room = 0;
+                for (const label celli : front)
+                {
+                    for (const label n : cellCells[celli])
+                    {
+                        if (visited[n] != groupi)
+                        {
+                            visited[n] = groupi;
+                            next.append(n);
+                            room += max(solidMax - s[n], scalar(0))*V[n];
+                        }
+                    }
+                }
+                const scalar given = min(room, excess);
+                if (given > 0)
+                {
+                    for (const label n : next)
                     {
                         const scalar roomn =
                             max(solidMax - s[n], scalar(0))*V[n];
-                        s[n] += roomn/room*excess/V[n];
+                        s[n] += roomn/room*given/V[n];
                     }
-                    continue;
                 }
+                excess -= given;
+                front.transfer(next);
+            }
 
-                // Fill all neighbours, overfill the outer ones
-                targets.clear();
-                for (const label n : nbrs)
-                {
-                    s[n] = max(s[n], solidMax);
-                    if (layer[n] < 0 || layer[n] > layer[celli])
-                    {
-                        targets.append(n);
-                    }
-                }
-                if (targets.empty())
-                {
-                    targets = nbrs;
-                }
-                const scalar overflow = (excess - room)/targets.size();
-                for (const label n : targets)
-                {
-                    s[n] += overflow/V[n];
-                    if (layer[n] < 0)
-                    {
-                        layer[n] = layer[celli] + 1;
-                    }
-                    if (!queued[n])
-                    {
-                        queued[n] = true;
-                        next.append(n);
-                    }
-                }
-            }
-            for (const label n : next)
+            // The group keeps at the bound what it gave away; the rest, if
+            // any, stays on its cells in proportion to their excess
+            scalar groupExcess = 0;
+            for (const label celli : group)
             {
-                queued[n] = false;
+                groupExcess += (s[celli] - solidMax)*V[celli];
             }
-            full.transfer(next);
+            const scalar kept = groupExcess > 0 ? excess/groupExcess : 0;
+            for (const label celli : group)
+            {
+                s[celli] = solidMax + kept*(s[celli] - solidMax);
+            }
+            ++groupi;
         }
     }
 

@@ -12,6 +12,13 @@ writes
   results/fractions.dat    at each write: the fraction of the bed in the
                            chamber, the tube, the duct, collection chambers
                            A and B, and deleted at the vent
+  results/tubeProfile.dat  the particles' mean vertical velocity in four
+                           height bins of the outlet tube (all writes
+                           pooled), next to that of a lone sphere
+                           accelerated from rest at the tube's mouth by the
+                           run's mean gas velocity in the tube (vent flow /
+                           tube area; Schiller-Naumann drag and gravity):
+                           an estimate of what the tube's length allows
   results/summary.dat      the figures the README reports
   results/timeSeries.png   particle velocity in the tube, gas velocity at
                            the vent, fraction evacuated, against time
@@ -70,6 +77,29 @@ def classify(P, x, y, z):
     return "collectorA" if xr < 0 else "collectorB"
 
 
+def lone_sphere_velocity(P, u_gas, heights):
+    """Vertical velocity of a lone sphere (the case's diameter and density)
+    accelerated from rest at the tube's mouth by a uniform upward gas
+    velocity u_gas (Schiller-Naumann drag, gravity), at the given heights
+    above the mouth"""
+    d, rho_p, nu = P["diameter"], P["density"], P["nuGas"]
+    mu = P["rhoGas"] * nu
+    v = z = 0.0
+    dt = 1e-6
+    out = []
+    for h in sorted(heights):
+        while z < h:
+            slip = u_gas - v
+            re = abs(slip) * d / nu
+            a = 18 * mu * (1 + 0.15 * re ** 0.687) / (rho_p * d * d) * slip - 9.81
+            v += a * dt
+            z += v * dt
+            if v <= 0 and a <= 0:
+                return out + [0.0] * (len(heights) - len(out))
+        out.append(v)
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--ci", action="store_true")
@@ -123,12 +153,22 @@ def main():
         dumps.append((step, path))
     fr_rows = []
     places = ["chamber", "tube", "duct", "collectorA", "collectorB"]
+    n_bins = 4
+    z_mouth, tube_len = P["chamberHeight"], P["tubeTop"] - P["chamberHeight"]
+    bin_n = [0] * n_bins
+    bin_vz = [0.0] * n_bins
     for step, path in sorted(dumps):
         counts = dict.fromkeys(places, 0)
         lines = open(path).read().split("ITEM: ATOMS")[1].strip().splitlines()[1:]
         for line in lines:
             v = line.split()
-            counts[classify(P, float(v[1]), float(v[2]), float(v[3]))] += 1
+            where = classify(P, float(v[1]), float(v[2]), float(v[3]))
+            counts[where] += 1
+            if where == "tube":
+                k = int((float(v[3]) - z_mouth) / tube_len * n_bins)
+                if 0 <= k < n_bins:
+                    bin_n[k] += 1
+                    bin_vz[k] += float(v[6])
         fr_rows.append((step * dt, counts, n0 - len(lines)))
     with open("results/fractions.dat", "w") as f:
         f.write("# t_s " + " ".join(places) + " deletedAtVent (fractions of the "
@@ -136,6 +176,21 @@ def main():
         for tt, c, gone in fr_rows:
             f.write("%.6g " % tt + " ".join("%.5f" % (c[p] / n0) for p in places)
                     + " %.5f\n" % (gone / n0))
+
+    # The tube's velocity profile against a lone sphere's in the run's mean
+    # gas velocity in the tube
+    u_tube_gas = sum(u for u in u_vent) / len(u_vent) * a_vent / P["tubeWidth"] ** 2
+    centres = [(k + 0.5) * tube_len / n_bins for k in range(n_bins)]
+    lone = lone_sphere_velocity(P, u_tube_gas, centres)
+    with open("results/tubeProfile.dat", "w") as f:
+        f.write("# height above the tube's mouth [m], particle samples (all writes), "
+                "their mean vz [m/s], a lone sphere's vz from rest at the mouth in "
+                "%.4g m/s of gas (the run's mean vent flow / tube area) [m/s]\n"
+                % u_tube_gas)
+        for k in range(n_bins):
+            f.write("%.4f %d %.4f %.4f\n" % (
+                centres[k], bin_n[k],
+                bin_vz[k] / bin_n[k] if bin_n[k] else float("nan"), lone[k]))
 
     # The last quarter of the run: the established flow
     q0 = 0.75 * tq[-1]
@@ -156,6 +211,12 @@ def main():
         ("ventFlowOverSupplyFlow", qv / qs if qs else float("nan"), ""),
         ("tubeParticleVelocityMean_m_s", vz_mean,
          "mass-weighted vz in the tube, mean over samples with particles"),
+        ("tubeGasVelocityMean_m_s", u_tube_gas, "mean vent flow / tube area"),
+        ("tubeTopBinParticleVelocity_m_s",
+         bin_vz[-1] / bin_n[-1] if bin_n[-1] else float("nan"),
+         "mean vz in the tube's top quarter, all writes pooled"),
+        ("loneSphereTubeTopBinVelocity_m_s", lone[-1],
+         "a lone sphere from rest at the mouth, same height"),
         ("endTime_s", t[-1], ""),
     ]
     caseio.write_summary(".", [(k, "%.6g" % v) for k, v, _ in rows])

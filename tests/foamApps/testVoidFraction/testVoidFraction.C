@@ -895,6 +895,34 @@ void boxSuite(const fvMesh& mesh)
             str("alphaMin 0.5 reached: min eps ", gMin(alpha.primitiveField()))
         );
     }
+
+    // The layers' limit: with none the whole excess is lost; with one, the
+    // first layer around each clipped group is filled to the bound and the
+    // rest is lost, and reported (testModel checks the volume account)
+    for (const label nLayers : {0, 1})
+    {
+        dictionary coeffs;
+        coeffs.add("alphaMin", 0.5);
+        coeffs.add("maxRedistributionSweeps", nLayers);
+        expectations expect;
+        expect.clipping = true;
+        expect.noLoss = false;
+        autoPtr<voidFractionModel> model = testModel
+        (
+            mesh, str("dense centre, alphaMin 0.5, ", nLayers, " layer(s)"),
+            couplingDict("centre", coeffs), pDense, expect, alpha
+        );
+        const scalar lost = model->lostSolidVolume();
+        const scalar clipped = model->clippedVolume();
+        check
+        (
+            nLayers == 0
+          ? mag(lost - clipped) <= 1e-12*clipped
+          : lost > 0 && lost < clipped,
+            str(nLayers, " layer(s): lost ", lost, " of the clipped excess ",
+                clipped)
+        );
+    }
 }
 
 

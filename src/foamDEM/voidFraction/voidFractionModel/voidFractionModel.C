@@ -162,8 +162,10 @@ void Foam::foamDEM::voidFractionModel::setFromSolidFraction
     // layer, up to maxRedistributionSweeps layers. What is left after that
     // (or when no layer is left) stays in the group's cells and is lost
     // at the bound below. A cell is visited once per group, so the excess
-    // never flows back.
-    if (redistributeClipped_ && full.size())
+    // never flows back. Groups go in cell order, an earlier one taking the
+    // room nearest to it; each walk costs the cells within its layers, so
+    // many groups in a region already filled to the bound cost more.
+    if (redistributeClipped_ && maxRedistributionSweeps_ > 0 && full.size())
     {
         const labelListList& cellCells = mesh_.cellCells();
         labelList visited(mesh_.nCells(), -1);
@@ -237,7 +239,7 @@ void Foam::foamDEM::voidFractionModel::setFromSolidFraction
                     }
                 }
                 excess -= given;
-                front.transfer(next);
+                front.swap(next);
             }
 
             // The group keeps at the bound what it gave away; the rest, if

@@ -12,7 +12,9 @@ only the maximum, from log.meanCourant if there is one: OpenFOAM's
 CourantNo and volFieldValue function objects at every write), and
 writes
 
-  results/studies.dat   one line per study: mean and largest Courant
+  results/studies.dat   one line per study (a run that stopped before its
+                        end, diverged, is marked and has no results):
+                        mean and largest Courant
                         number, CPU and wall time, the fraction of the bed
                         evacuated at 0.10, 0.15 and 0.20 s, the fraction
                         that reached collector B or left through the vent,
@@ -77,6 +79,8 @@ def times(log):
 def courant(d):
     text = open(os.path.join(d, "log.pisoDEMFoam")).read()
     pairs = re.findall(r"Courant number mean = ([\d.eE+-]+) max = ([\d.eE+-]+)", text)
+    # (a diverging run's last lines are not Courant numbers of its flow)
+    pairs = [(m, p) for m, p in pairs if float(p) < 1e3]
     mean = [float(m) for m, _ in pairs]
     peak = [float(p) for _, p in pairs]
     if not pairs and os.path.exists(os.path.join(d, "log.meanCourant")):
@@ -97,7 +101,16 @@ def study(d):
     cpu, wall = times(os.path.join(d, "log.pisoDEMFoam"))
     co_mean, co_max = courant(d)
     last = fr[-1]
-    return dict(
+    asked = caseio.foam_scalar(os.path.join(d, "DEM", "post", "setupDict"), "endTime")
+    if ts[-1][0] < asked - 2e-3:
+        # stopped early (the solver's NaN check): no results, only where
+        return dict(coMean=co_mean, coMax=co_max, cpu=cpu, wall=wall,
+                    end=ts[-1][0], stopped=True,
+                    **{k: float("nan") for k in (
+                        ["evac%.2f" % t for t in TIMES]
+                        + ["reachedB", "tubeVelocity", "ventVelocity"])},
+                    series=[(r[0], r[1]) for r in ts])
+    return dict(stopped=False,
         coMean=co_mean, coMax=co_max, cpu=cpu, wall=wall,
         end=float(s["endTime_s"]),
         **{"evac%.2f" % t: at(ts, t) for t in TIMES},
@@ -141,7 +154,9 @@ def main():
                 name, r["coMean"], r["coMax"], r["cpu"], r["wall"], r["end"])
                 + " ".join("%.4f" % r[k] for k in keys)
                 + " | %-5s " % REFERENCE[name] + " ".join(diffs)
-                + "  # " + WHAT[name] + "\n")
+                + "  # " + WHAT[name]
+                + (" (stopped at %.4g s: diverged)" % r["end"] if r["stopped"] else "")
+                + "\n")
     print(open("results/studies.dat").read())
 
     try:
@@ -161,7 +176,8 @@ def main():
     a1.grid(alpha=0.3)
     for name, r in found.items():
         ref = found.get(REFERENCE[name])
-        if name.startswith("e") or ref is None or name == REFERENCE[name]:
+        if (name.startswith("e") or ref is None or name == REFERENCE[name]
+                or r["stopped"]):
             continue
         err = abs(r["evac0.20"] - ref["evac0.20"])
         a2.plot(r["cpu"], err, "o", color="C0" if name.startswith("ci") or name == "base" else "C1")

@@ -16,9 +16,10 @@ writes
                            height bins of the outlet tube (all writes
                            pooled), next to that of a lone sphere
                            accelerated from rest at the tube's mouth by the
-                           run's mean gas velocity in the tube (vent flow /
-                           tube area; Schiller-Naumann drag and gravity):
-                           an estimate of what the tube's length allows
+                           mean gas velocity in the tube while it held
+                           particles (vent flow / tube area; Schiller-
+                           Naumann drag and gravity): what a particle alone
+                           would reach in the tube's length
   results/summary.dat      the figures the README reports
   results/timeSeries.png   particle velocity in the tube, gas velocity at
                            the vent, fraction evacuated, against time
@@ -177,15 +178,24 @@ def main():
             f.write("%.6g " % tt + " ".join("%.5f" % (c[p] / n0) for p in places)
                     + " %.5f\n" % (gone / n0))
 
-    # The tube's velocity profile against a lone sphere's in the run's mean
-    # gas velocity in the tube
-    u_tube_gas = sum(u for u in u_vent) / len(u_vent) * a_vent / P["tubeWidth"] ** 2
+    # The tube's velocity profile against a lone sphere's in the mean gas
+    # velocity in the tube while it held particles (the vent's volume flow
+    # at the DEM's sample times with particles in the tube)
+    import bisect
+    loaded = []
+    for tt, k in zip(t, in_tube):
+        if k > 0 and tq:
+            j = min(bisect.bisect_left(tq, tt), len(tq) - 1)
+            loaded.append(u_vent[j])
+    u_vent_loaded = sum(loaded) / len(loaded) if loaded else sum(u_vent) / len(u_vent)
+    u_tube_gas = u_vent_loaded * a_vent / P["tubeWidth"] ** 2
     centres = [(k + 0.5) * tube_len / n_bins for k in range(n_bins)]
     lone = lone_sphere_velocity(P, u_tube_gas, centres)
     with open("results/tubeProfile.dat", "w") as f:
         f.write("# height above the tube's mouth [m], particle samples (all writes), "
                 "their mean vz [m/s], a lone sphere's vz from rest at the mouth in "
-                "%.4g m/s of gas (the run's mean vent flow / tube area) [m/s]\n"
+                "%.4g m/s of gas (the mean vent flow while the tube held particles "
+                "/ tube area) [m/s]\n"
                 % u_tube_gas)
         for k in range(n_bins):
             f.write("%.4f %d %.4f %.4f\n" % (
@@ -211,7 +221,8 @@ def main():
         ("ventFlowOverSupplyFlow", qv / qs if qs else float("nan"), ""),
         ("tubeParticleVelocityMean_m_s", vz_mean,
          "mass-weighted vz in the tube, mean over samples with particles"),
-        ("tubeGasVelocityMean_m_s", u_tube_gas, "mean vent flow / tube area"),
+        ("tubeGasVelocityLoaded_m_s", u_tube_gas,
+         "mean vent flow while the tube held particles / tube area"),
         ("tubeTopBinParticleVelocity_m_s",
          bin_vz[-1] / bin_n[-1] if bin_n[-1] else float("nan"),
          "mean vz in the tube's top quarter, all writes pooled"),

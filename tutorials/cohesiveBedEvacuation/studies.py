@@ -19,7 +19,8 @@ writes
                         evacuated at 0.10, 0.15 and 0.20 s, the fraction
                         that reached collector B or left through the vent,
                         the mean particle velocity in the outlet tube, the
-                        gas velocity at the vent over the last quarter; and
+                        gas velocity at the vent over the last quarter and
+                        before the first particle entered the tube; and
                         each quantity's difference from the study's
                         reference level (time step: ci1, the smallest step;
                         mesh and restitution: base)
@@ -94,6 +95,16 @@ def courant(d):
     return sum(mean) / len(mean), max(peak)
 
 
+def clean_vent_velocity(path, ts):
+    """The mean gas velocity at the vent from 0.02 s (start-up) to the
+    first particle in the outlet tube: the gas flow before the load"""
+    first = next((r[0] for r in ts if r[2] > 0), ts[-1][0])
+    u = [float(line.split()[2]) for line in open(path)
+         if re.match(r"# [\d.eE+-]+ ", line)
+         and 0.02 <= float(line.split()[1]) < first]
+    return sum(u) / len(u) if u else float("nan")
+
+
 def study(d):
     s = caseio.read_summary(d)
     ts = read_rows(os.path.join(d, "results", "timeSeries.dat"))
@@ -108,13 +119,16 @@ def study(d):
                     end=ts[-1][0], stopped=True,
                     **{k: float("nan") for k in (
                         ["evac%.2f" % t for t in TIMES]
-                        + ["reachedB", "tubeVelocity", "ventVelocity"])},
+                        + ["reachedB", "tubeVelocity", "ventVelocity",
+                           "ventVelocityClean"])},
                     series=[(r[0], r[1]) for r in ts])
     return dict(stopped=False,
         coMean=co_mean, coMax=co_max, cpu=cpu, wall=wall,
         end=float(s["endTime_s"]),
         **{"evac%.2f" % t: at(ts, t) for t in TIMES},
         reachedB=last[5] + last[6],
+        ventVelocityClean=clean_vent_velocity(
+            os.path.join(d, "results", "timeSeries.dat"), ts),
         tubeVelocity=float(s["tubeParticleVelocityMean_m_s"]),
         ventVelocity=float(s["ventVelocityLastQuarter_m_s"]),
         series=[(r[0], r[1]) for r in ts])
@@ -130,14 +144,15 @@ def main():
     if not found:
         sys.exit("studies.py: no study with results in %s" % top)
     keys = ["evac0.10", "evac0.15", "evac0.20", "reachedB", "tubeVelocity",
-            "ventVelocity"]
+            "ventVelocity", "ventVelocityClean"]
     os.makedirs("results", exist_ok=True)
     with open("results/studies.dat", "w") as f:
         f.write("# cohesiveBedEvacuation studies (%s), all from one packed bed\n" % top)
         f.write("# study coMean coMax cpu_s wall_s end_s " + " ".join(keys)
                 + " | reference " + " ".join("d_" + k for k in keys) + "\n")
         f.write("# evac<t>: fraction of the bed out of the chamber at t; reachedB: "
-                "collector B + deleted at the vent, at the end; velocities in m/s; "
+                "collector B + deleted at the vent, at the end; velocities in m/s "
+                "(ventVelocityClean: from 0.02 s to the first particle in the tube); "
                 "d_: difference from the reference study (fractions: absolute; "
                 "velocities: relative)\n")
         for name, r in found.items():
@@ -146,7 +161,7 @@ def main():
             for k in keys:
                 if ref is None or math.isnan(r[k]) or math.isnan(ref[k]):
                     diffs.append("nan")
-                elif k.endswith("Velocity"):
+                elif "Velocity" in k:
                     diffs.append("%+.4f" % (r[k] / ref[k] - 1))
                 else:
                     diffs.append("%+.4f" % (r[k] - ref[k]))
@@ -168,7 +183,8 @@ def main():
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
     for name, r in found.items():
         t, e = zip(*r["series"])
-        a1.plot(t, e, label=name, lw=1.2,
+        a1.plot(t, e, label=name + (" (diverged at %.4g s)" % r["end"]
+                                    if r["stopped"] else ""), lw=1.2,
                 ls="-" if name in ("base", "ci1", "ci3", "ci4") else "--")
     a1.set_xlabel("t [s]")
     a1.set_ylabel("fraction of the bed out of the chamber")

@@ -18,7 +18,7 @@ writes
                            accelerated from rest at the tube's mouth by the
                            mean gas velocity in the tube while it held
                            particles (vent flow / tube area; Schiller-
-                           Naumann drag and gravity): what a particle alone
+                           Naumann drag of foamdem.drag, gravity): what a particle alone
                            would reach in the tube's length
   results/summary.dat      the figures the README reports
   results/timeSeries.png   particle velocity in the tube, gas velocity at
@@ -33,6 +33,7 @@ writes
        - the run reached its end time.
 """
 import argparse
+import bisect
 import glob
 import math
 import os
@@ -40,7 +41,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.join(os.environ.get("FOAMDEM_DIR", "../.."), "python"))
-from foamdem import caseio  # noqa: E402
+from foamdem import caseio, drag  # noqa: E402
 
 import prepare  # noqa: E402  (the case's own geometry parameters)
 
@@ -81,18 +82,18 @@ def classify(P, x, y, z):
 def lone_sphere_velocity(P, u_gas, heights):
     """Vertical velocity of a lone sphere (the case's diameter and density)
     accelerated from rest at the tube's mouth by a uniform upward gas
-    velocity u_gas (Schiller-Naumann drag, gravity), at the given heights
-    above the mouth"""
-    d, rho_p, nu = P["diameter"], P["density"], P["nuGas"]
-    mu = P["rhoGas"] * nu
+    velocity u_gas (Schiller-Naumann drag, foamdem.drag; gravity), at the
+    given heights above the mouth, in increasing order"""
+    d, rho_g = P["diameter"], P["rhoGas"]
+    mu = rho_g * P["nuGas"]
+    mass = P["density"] * math.pi / 6 * d ** 3
     v = z = 0.0
     dt = 1e-6
     out = []
-    for h in sorted(heights):
+    for h in heights:
         while z < h:
             slip = u_gas - v
-            re = abs(slip) * d / nu
-            a = 18 * mu * (1 + 0.15 * re ** 0.687) / (rho_p * d * d) * slip - 9.81
+            a = drag.schiller_naumann(d, rho_g, mu, 1.0, abs(slip)) * slip / mass - 9.81
             v += a * dt
             z += v * dt
             if v <= 0 and a <= 0:
@@ -181,7 +182,6 @@ def main():
     # The tube's velocity profile against a lone sphere's in the mean gas
     # velocity in the tube while it held particles (the vent's volume flow
     # at the DEM's sample times with particles in the tube)
-    import bisect
     loaded = []
     for tt, k in zip(t, in_tube):
         if k > 0 and tq:

@@ -37,6 +37,8 @@ import sys
 sys.path.insert(0, os.path.join(os.environ.get("FOAMDEM_DIR", "../.."), "python"))
 from foamdem import caseio  # noqa: E402
 
+from postprocess import read_table  # noqa: E402  (the case's own)
+
 ORDER = ["ci1", "base", "ci3", "ci4", "mesh3mm", "e0.1", "e0.5"]
 WHAT = {
     "base": "the tutorial: couplingInterval 2, 2 mm background mesh, e 0.3",
@@ -51,14 +53,6 @@ WHAT = {
 REFERENCE = {"ci1": "ci1", "base": "ci1", "ci3": "ci1", "ci4": "ci1",
              "mesh3mm": "base", "e0.1": "base", "e0.5": "base"}
 TIMES = (0.10, 0.15, 0.20)
-
-
-def read_rows(path):
-    rows = []
-    for line in open(path):
-        if line.strip() and not line.startswith("#"):
-            rows.append([float(v) for v in line.split()])
-    return rows
 
 
 def at(rows, t):
@@ -107,8 +101,8 @@ def clean_vent_velocity(path, ts):
 
 def study(d):
     s = caseio.read_summary(d)
-    ts = read_rows(os.path.join(d, "results", "timeSeries.dat"))
-    fr = read_rows(os.path.join(d, "results", "fractions.dat"))
+    ts = read_table(os.path.join(d, "results", "timeSeries.dat"))
+    fr = read_table(os.path.join(d, "results", "fractions.dat"))
     cpu, wall = times(os.path.join(d, "log.pisoDEMFoam"))
     co_mean, co_max = courant(d)
     last = fr[-1]

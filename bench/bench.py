@@ -14,7 +14,11 @@ Each benchmark runs with its baseline in the same invocation:
   8. densePneumaticConveying: the coupled run (tutorial, np 2; its CI
      section by default, --pneumatic-full for the reference's 32 194
      particles) against standalone LIGGGHTS on the same packing, with the
-     same script and coupling fixes, for the same DEM steps.
+     same script and coupling fixes, for the same DEM steps,
+  9. work-precision of the coupling interval and the DEM step on a smaller
+     fluidBed (9 000 particles by default, 0.5 s): the wall time of each
+     variant against what it changes in the bed height and the bed's
+     pressure drop over the last 60 % of the run (the base: 5e-6 s x 20).
 Results: bench/results/<date>/table.md (+ raw.json, work/ with the runs).
 
 The fluidBed case (bench/cases/fluidBed): 2 mm glass spheres (2500 kg/m^3)
@@ -215,6 +219,9 @@ def coupled(d, np=1, log="log.pisoDEMFoam"):
     r["timers"] = dict(zip(keys, map(float, m.groups()))) if m else {}
     m = re.search(r"DEM steps per CFD step, (\d+) particles", text)
     r["particles"] = int(m.group(1)) if m else 0
+    m = re.search(r"foamDEM DEM neighbour-list builds: (\d+) \(dangerous (\d+)\)", text)
+    if m:
+        r["neighbourBuilds"] = [int(m.group(1)), int(m.group(2))]
     ex = re.findall(r"\[(\d+)\] foamDEM exchange: DEM particles (\d+), sent "
                     r"(\d+), received (\d+), bytes sent (\d+)", text)
     if ex:
@@ -242,6 +249,10 @@ def standalone(d, log="log.standalone", script="DEM/in.standalone"):
     r.update(loop=sum(float(x[0]) for x in m),
              steps=sum(int(x[2]) for x in m), particles=int(m[-1][3]),
              runs=len(m))
+    nb = re.findall(r"Neighbor list builds = (\d+)", text)
+    nd = re.findall(r"Dangerous builds = (\d+)", text)
+    if nb:
+        r["neighbourBuilds"] = [int(nb[-1]), int(nd[-1]) if nd else -1]
     return r
 
 
@@ -396,6 +407,107 @@ def outputs(work, nLayers, steps, np, repeat=1, writes=5):
     return res
 
 
+# 9: the variants (DEM step [s], DEM steps per CFD step); the first is the
+# base. The Rayleigh time of the bed's spheres is 1.22e-4 s: 5e-6, 1e-5 and
+# 2e-5 s are 4.1, 8.2 and 16.4 % of it (the guard refuses above 30 %; at
+# 2e-5 s it warns of 13.5 steps per Hertz contact at 1 m/s, below 20)
+WP_VARIANTS = [(5e-6, 20), (5e-6, 50), (5e-6, 100), (1e-5, 10), (2e-5, 5), (2e-5, 25)]
+WP_SAMPLE = 1e-3        # the bed height's sampling period [s]
+
+
+# The contacts (pairs and walls, counted per particle by LIGGGHTS's
+# contact/atom, summed) every 100 DEM steps: the runs of 2b/2c/2e compare
+# DEM times only if the particles touch as often
+CONTACTS = ("compute         foamDEMContacts all contact/atom\n"
+            "compute         foamDEMContactSum all reduce sum c_foamDEMContacts\n"
+            "fix             foamDEMContactAve all ave/time 100 1 100 c_foamDEMContactSum file %s")
+
+
+def meanContacts(path):
+    """Mean of the contact counts a CONTACTS fix wrote (None without the file)."""
+    if not os.path.exists(path):
+        return None
+    v = [float(l.split()[1]) for l in open(path) if l.strip() and not l.startswith("#")]
+    return sum(v) / len(v) if v else None
+
+
+def workPrecision(work, nLayers, tEnd, window):
+    """9: each variant of WP_VARIANTS on the same bed for tEnd; returns per
+    variant the time loop's wall, the mean bed height and the mean pressure
+    drop over the window, and the same over its two halves (their
+    difference shows how steady the window is)."""
+    res = []
+    t0, t1 = window
+    tm = 0.5 * (t0 + t1)
+    weight = nLayers * PER_LAYER * math.pi / 6 * D**3 * (RHO_P - RHO_F) * G / WIDTH**2
+    for dt, interval in WP_VARIANTS:
+        name = "workPrecision_%g_x%d" % (dt, interval)
+        steps = int(round(tEnd / dt))
+        nEvery = max(1, int(round(WP_SAMPLE / dt)))
+        # the inlet's area-averaged (kinematic) pressure every CFD step; the
+        # outlet holds p = 0
+        functions = """    inletPressure
+    {
+        type            surfaceFieldValue;
+        libs            ("libfieldFunctionObjects.so");
+        writeControl    timeStep;
+        writeInterval   1;
+        log             false;
+        writeFields     false;
+        regionType      patch;
+        name            inlet;
+        operation       areaAverage;
+        fields          (p);
+    }"""
+        # the mean particle height, every WP_SAMPLE
+        demExtra = ("timestep        %.10g\n"
+                    "variable        zcm equal xcm(all,z)\n"
+                    "fix             wpHeight all ave/time %d 1 %d v_zcm file bedHeight.dat"
+                    % (dt, nEvery, nEvery))
+        d, _ = fluidbed(work, name, nLayers, 1, functions=functions, demExtra=demExtra)
+        for rel, pat, rep in (("constant/couplingProperties", r"couplingInterval\s+\d+;",
+                               "couplingInterval    %d;" % interval),
+                              ("system/controlDict", r"deltaT\s+[^;]+;",
+                               "deltaT          %.10g;" % (interval * dt)),
+                              ("system/controlDict", r"endTime\s+[^;]+;",
+                               "endTime         %.10g;" % tEnd)):
+            pth = os.path.join(d, rel)
+            text, n = re.subn(pat, rep, open(pth).read())
+            if n != 1:
+                raise RuntimeError("9: no '%s' in %s" % (pat, pth))
+            open(pth, "w").write(text)
+        say("[9] fluidBed %d particles, DEM step %g s x %d, %g s ..."
+            % (nLayers * PER_LAYER, dt, interval, tEnd))
+        r = coupled(d)
+        r.update(dt=dt, interval=interval, steps=steps)
+        h = []
+        for line in open(os.path.join(d, "bedHeight.dat")):
+            if line.startswith("#") or not line.strip():
+                continue
+            step, z = line.split()[:2]
+            h.append((int(step) * dt, 2 * (float(z) - Z_FLOOR)))
+        pf = None
+        for root, _, files in os.walk(os.path.join(d, "postProcessing", "inletPressure")):
+            for f in files:
+                if f.endswith(".dat"):
+                    pf = os.path.join(root, f)
+        pr = []
+        for line in open(pf):
+            if line.startswith("#") or not line.strip():
+                continue
+            t, pk = line.split()[:2]
+            pr.append((float(t), RHO_F * float(pk) / weight))
+
+        def mean(series, a, b):
+            v = [x for t, x in series if a <= t <= b + 1e-12]
+            return sum(v) / len(v) if v else float("nan")
+        r["height"] = [mean(h, t0, t1), mean(h, t0, tm), mean(h, tm, t1)]
+        r["dpOverWeight"] = [mean(pr, t0, t1), mean(pr, t0, tm), mean(pr, tm, t1)]
+        r["height0"] = h[0][1] if h else float("nan")
+        res.append(r)
+    return res
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -404,13 +516,18 @@ def main():
     ap.add_argument("--quick", action="store_true", help="small size, few steps (< 5 min)")
     ap.add_argument("--dpm-time", type=float, help="simulated time of the Goldschmidt runs [s]")
     ap.add_argument("--repeat", type=int, help="runs of the timed np 1 / standalone / np 2 cases, best kept (default 2, --quick 1)")
-    ap.add_argument("--only", default="", help="comma list of benchmarks 1-8 (default all)")
+    ap.add_argument("--only", default="", help="comma list of benchmarks 1-9 (default all)")
     ap.add_argument("--interval", type=int, default=20,
                     help="DEM steps per CFD (coupling) step of the fluidBed runs (default 20: deltaT 1e-4 s)")
     ap.add_argument("--pneumatic-full", action="store_true",
                     help="8: the tutorial's full system (32 194 particles; its packing took 226 s at np 2 in a sensitivity run) instead of its CI section")
     ap.add_argument("--pneumatic-end", type=float,
                     help="8: simulated time of the coupled run [s] (default: the CI run's 0.1 s; 0.05 s with --pneumatic-full)")
+    ap.add_argument("--wp-size", type=int,
+                    help="9: particles of the work-precision bed (default 9000, --quick 2700)")
+    ap.add_argument("--wp-time", type=float,
+                    help="9: simulated time of each work-precision run [s] (default 0.5, "
+                         "--quick 0.2; the last 60 %% are averaged)")
     ap.add_argument("--out", help="results directory (default bench/results/<date>)")
     a = ap.parse_args()
     global INTERVAL
@@ -420,7 +537,7 @@ def main():
     repeat = a.repeat or (1 if a.quick else 2)
     steps = max(INTERVAL, steps // INTERVAL * INTERVAL)
     dpmTime = a.dpm_time or (0.001 if a.quick else 0.005)
-    only = set(a.only.split(",")) if a.only else set("12345678")
+    only = set(a.only.split(",")) if a.only else set("123456789")
     nLayers = max(1, int(round(size / PER_LAYER)))
     stamp = datetime.datetime.now().strftime("%Y-%m-%d_%H%M%S")
     out = a.out or os.path.join(BENCH, "results", stamp)
@@ -449,23 +566,43 @@ def main():
         R["cells"] = cells
         # Like-for-like DEM baseline: the gas at rest, so that the particles
         # move as in the standalone run (the coupling still runs in full)
-        dStill, _ = fluidbed(work, "coupled_still", nLayers, steps, uIn=0)
+        dStill, _ = fluidbed(work, "coupled_still", nLayers, steps, uIn=0,
+                             demExtra=CONTACTS % "contacts.dat")
+        # The same with no force on the particles (model B, no force
+        # models): the particles move as in the standalone runs, which the
+        # contact counts show
+        dFree, _ = fluidbed(work, "coupled_noForces", nLayers, steps, uIn=0,
+                            demExtra=CONTACTS % "contacts.dat")
+        pth = os.path.join(dFree, "constant/couplingProperties")
+        text = open(pth).read()
+        text, n1 = re.subn(r"modelType\s+A;", "modelType           B;", text)
+        text, n2 = re.subn(r"forceModels\s+\([^)]*\);", "forceModels         ();", text)
+        if n1 != 1 or n2 != 1:
+            raise RuntimeError("2e: no modelType A or forceModels in %s" % pth)
+        open(pth, "w").write(text)
+        free = []
         runs, still, sa, saf = [], [], [], []
         for k in range(repeat):
             say("[1] coupled fluidBed, np = 1, run %d of %d ..." % (k + 1, repeat))
             runs.append(coupled(d, log="log.pisoDEMFoam.%d" % k))
             say("[2] coupled fluidBed with the gas at rest, run %d of %d ..." % (k + 1, repeat))
             still.append(coupled(dStill, log="log.pisoDEMFoam.%d" % k))
+            still[-1]["contacts"] = meanContacts(os.path.join(dStill, "contacts.dat"))
+            say("[2] coupled fluidBed with no force on the particles, run %d of %d ..." % (k + 1, repeat))
+            free.append(coupled(dFree, log="log.pisoDEMFoam.%d" % k))
+            free[-1]["contacts"] = meanContacts(os.path.join(dFree, "contacts.dat"))
             say("[2] standalone LIGGGHTS, same system, run %d of %d ..." % (k + 1, repeat))
             sa.append(standalone(d, log="log.standalone.%d" % k))
             say("[2] standalone LIGGGHTS with foamDEM's coupling fixes, run in "
                 "%d-step pieces, run %d of %d ..." % (INTERVAL, k + 1, repeat))
             saf.append(standalone(d, log="log.standaloneCoupled.%d" % k,
                                   script="DEM/in.standaloneCoupled"))
+            saf[-1]["contacts"] = meanContacts(os.path.join(d, "contacts.standaloneCoupled.dat"))
         R["coupled"], R["standalone"] = best(runs), best(sa)
         R["coupledStill"], R["standaloneCoupled"] = bestDem(still), best(saf)
         R["coupledRuns"], R["standaloneRuns"] = runs, sa
         R["coupledStillRuns"], R["standaloneCoupledRuns"] = still, saf
+        R["coupledNoForces"], R["coupledNoForcesRuns"] = bestDem(free), free
         save()
     if only & set("5"):
         d, _ = fluidbed(work, "coupled_np2", nLayers, steps, np=2, logExchange=True)
@@ -511,6 +648,14 @@ def main():
             % ("full system" if a.pneumatic_full else "CI section"))
         R["pneumatic"] = pneumatic(work, 2, a.pneumatic_full,
                                    a.pneumatic_end or (0.05 if a.pneumatic_full else None))
+    if only & set("9"):
+        wpLayers = max(1, int(round((a.wp_size or (2700 if a.quick else 9000)) / PER_LAYER)))
+        wpTime = a.wp_time or (0.2 if a.quick else 0.5)
+        window = (0.4 * wpTime, wpTime)
+        R["workPrecision"] = {"particles": wpLayers * PER_LAYER, "time": wpTime,
+                              "window": list(window),
+                              "runs": workPrecision(work, wpLayers, wpTime, window)}
+        save()
     R["loadEnd"] = loadavg()
     json.dump(R, open(os.path.join(out, "raw.json"), "w"), indent=1)
     table(R, out)
@@ -554,13 +699,35 @@ def table(R, out):
             demStill = R["coupledStill"]["timers"]["dem"]
             rows.append(("2c where the DEM time goes (gas at rest)",
                          "standalone %.2f s -> with foamDEM's coupling fixes, in %d-step runs, %.2f s "
-                         "(x %.2f: the fixes' own cost) -> DEM part of the coupled run %.2f s "
-                         "(x %.2f: same steps and fixes inside pisoDEMFoam). Coupled DEM / "
-                         "(standalone + fixes) %.2f"
+                         "(x %.2f: the fixes' own cost) -> DEM part of the coupled run with the gas at rest %.2f s "
+                         "(x %.2f: the same steps and fixes, but the gas at rest still pushes the particles, "
+                         "which then touch more often: 2d). Coupled DEM / (standalone + fixes) %.2f; "
+                         "the like-for-like ratio is 2e"
                          % (s["loop"], R.get("interval", 20), sf["loop"], sf["loop"] / s["loop"], demStill,
                             demStill / sf["loop"], sf["loop"] / demStill),
-                         ">= 0.95", "yes" if sf["loop"] / demStill >= 0.95 else "NO",
-                         sf["load"]))
+                         "-", "-", sf["load"]))
+            nbS = sf.get("neighbourBuilds")
+            nbC = R["coupledStill"].get("neighbourBuilds")
+            cS, cC = sf.get("contacts"), R["coupledStill"].get("contacts")
+            if nbS and nbC and cS and cC:
+                rows.append(("2d is it the same particle motion? (gas at rest)",
+                             "neighbour-list builds: standalone with the fixes %d (dangerous %d), coupled %d "
+                             "(dangerous %d); mean contacts per DEM step (contact/atom summed, every 100 steps): "
+                             "standalone with the fixes %.0f, coupled %.0f (x %.3f)"
+                             % (nbS[0], nbS[1], nbC[0], nbC[1], cS, cC, cC / cS), "-", "-", sf["load"]))
+            if "coupledNoForces" in R:
+                nf = R["coupledNoForces"]
+                demFree = nf["timers"]["dem"]
+                cF = nf.get("contacts")
+                rows.append(("2e coupled DEM / standalone with the same fixes, same particle motion "
+                             "(no force on the particles: model B, forceModels ())",
+                             "%.2f: DEM part of the coupled run %.2f s against %.2f s standalone with the fixes "
+                             "(x %.3f); mean contacts %s against %s; total coupled / standalone %.2f "
+                             "(%.1f s time loop)"
+                             % (sf["loop"] / demFree, demFree, sf["loop"], demFree / sf["loop"],
+                                "%.0f" % cF if cF else "?", "%.0f" % cS if cS else "?",
+                                s["loop"] / nf["clock"], nf["clock"]),
+                             ">= 0.95", "yes" if sf["loop"] / demFree >= 0.95 else "NO", nf["load"]))
         rows.append(("3 coupling share of wall time",
                      "%.2f %% (%.2f s of %.1f s)" % (100 * share / total, share, total),
                      "<= 3 %", "yes" if share / total <= 0.03 else "NO", c["load"]))
@@ -646,6 +813,23 @@ def table(R, out):
                         else "the tutorial's CI section (6 277 particles, 960 cells: the full system's particles per cell)"),
                      "<= 1.2", "yes" if ratio <= 1.2 else "NO",
                      p["allrun"]["load"] + "; " + sa["load"]))
+    if "workPrecision" in R:
+        wp = R["workPrecision"]
+        base = wp["runs"][0]
+        tR = 1.2195e-4      # Rayleigh time of the bed's spheres [s]
+        for r in wp["runs"]:
+            h, dp = r["height"], r["dpOverWeight"]
+            rows.append(("9 work-precision, %d particles, %g s: DEM step %g s (%.1f %% of the Rayleigh "
+                         "time) x %d = CFD step %g s" % (wp["particles"], wp["time"], r["dt"],
+                                                         100 * r["dt"] / tR, r["interval"],
+                                                         r["dt"] * r["interval"]),
+                         "wall %.1f s (%.2f of the base's); over %g-%g s bed height %.2f mm (halves "
+                         "%.2f / %.2f; %+.1f %% against the base), pressure drop / buoyant weight %.3f "
+                         "(halves %.3f / %.3f; %+.1f %%)"
+                         % (r["clock"], r["clock"] / base["clock"], wp["window"][0], wp["window"][1],
+                            1e3 * h[0], 1e3 * h[1], 1e3 * h[2], 100 * (h[0] / base["height"][0] - 1),
+                            dp[0], dp[1], dp[2], 100 * (dp[0] / base["dpOverWeight"][0] - 1)),
+                         "-", "-", r["load"]))
     lines = ["# foamDEM benchmarks %s" % R["date"], "",
              "Host %s (%d cores); load (1/5/15 min) at start %s, at end %s." % (
                  R["host"], R["nproc"], R["loadStart"], R["loadEnd"]),

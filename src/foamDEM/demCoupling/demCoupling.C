@@ -814,6 +814,12 @@ Foam::foamDEM::demCoupling::~demCoupling()
         << ", void fraction " << t.voidFraction
         << ", forces " << t.forces << ", push " << t.push
         << "), particle output " << t.output << endl;
+    const labelPair nb(engine_->neighbourBuilds());
+    if (nb.first() >= 0)
+    {
+        Info<< "foamDEM DEM neighbour-list builds: " << nb.first()
+            << " (dangerous " << nb.second() << ")" << endl;
+    }
     if (transfer_ && transfer_->nAllRanks())
     {
         // The same on every rank (decided by a reduction)

@@ -743,6 +743,18 @@ namespace
 }
 
 
+Foam::labelPair Foam::foamDEM::liggghtsEngine::neighbourBuilds() const
+{
+    // LIGGGHTS's own counters, the ones its run summary prints as
+    // "Neighbor list builds" and "Dangerous builds" (over all runs here)
+    return labelPair
+    (
+        label(lmp_->neighbor->ncalls),
+        label(lmp_->neighbor->ndanger)
+    );
+}
+
+
 void Foam::foamDEM::liggghtsEngine::keepMeshWallBins()
 {
     // A mesh wall (fix wall/gran mesh) keeps, per triangle, the list of

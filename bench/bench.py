@@ -131,6 +131,15 @@ def run(cmd, cwd, log, check=True):
     return r
 
 
+def substitute(path, pattern, replacement, what):
+    """Replace the one match of pattern in the file (RuntimeError naming
+    what asked for it if there is not exactly one)."""
+    text, n = re.subn(pattern, replacement, open(path).read())
+    if n != 1:
+        raise RuntimeError("%s: %d matches of '%s' in %s (expected 1)" % (what, n, pattern, path))
+    open(path, "w").write(text)
+
+
 def fill(path, subs):
     s = open(path).read()
     for k, v in subs.items():
@@ -160,11 +169,7 @@ def fluidbed(work, name, nLayers, steps, np=1, refine=1, logExchange=False,
                                "couplingInterval    %d;" % INTERVAL),
                               ("system/controlDict", r"deltaT\s+1e-4;",
                                "deltaT          %.10g;" % (INTERVAL * DEM_DT))):
-            p = os.path.join(d, rel)
-            text, n = re.subn(pat, rep, open(p).read())
-            if n != 1:
-                raise RuntimeError("--interval: no '%s' in %s" % (pat, p))
-            open(p, "w").write(text)
+            substitute(os.path.join(d, rel), pat, rep, "--interval")
     hl = nLayers if heightLayers is None else heightLayers
     nz = PLENUM + max(10, int(math.ceil(hl * D * 2.5 / CELL)))
     H = nz * CELL
@@ -409,25 +414,39 @@ def outputs(work, nLayers, steps, np, repeat=1, writes=5):
 
 # 9: the variants (DEM step [s], DEM steps per CFD step); the first is the
 # base. The Rayleigh time of the bed's spheres is 1.22e-4 s: 5e-6, 1e-5 and
-# 2e-5 s are 4.1, 8.2 and 16.4 % of it (the guard refuses above 30 %; at
-# 2e-5 s it warns of 13.5 steps per Hertz contact at 1 m/s, below 20)
+# 2e-5 s are 4.1, 8.2 and 16.3 % of it (the table takes the percentage from
+# the stability guard's report). The guard refuses above 30 % of it or
+# below 10 steps per Hertz contact at 1 m/s (about 2.7e-5 s); at 2e-5 s it
+# warns of 13.5 steps, below 20
 WP_VARIANTS = [(5e-6, 20), (5e-6, 50), (5e-6, 100), (1e-5, 10), (2e-5, 5), (2e-5, 25)]
 WP_SAMPLE = 1e-3        # the bed height's sampling period [s]
 
 
-# The contacts (pairs and walls, counted per particle by LIGGGHTS's
-# contact/atom, summed) every 100 DEM steps: the runs of 2b/2c/2e compare
-# DEM times only if the particles touch as often
+# The particle-particle contacts every 1000 DEM steps (LIGGGHTS's
+# contact/atom: per particle, the neighbours within the sum of the radii,
+# so each touching pair counts twice; walls not counted), summed: the runs
+# of 2c/2e compare DEM times only if the particles touch as often. The
+# gas-at-rest and no-force coupled runs and both standalone scripts count
+# them (DEM/in.standalone*), so that the counting's cost (an extra
+# neighbour list per count: about 3 % of the DEM time when counted every
+# 100 steps, 2026-12-05) is in each compared timing alike
 CONTACTS = ("compute         foamDEMContacts all contact/atom\n"
             "compute         foamDEMContactSum all reduce sum c_foamDEMContacts\n"
-            "fix             foamDEMContactAve all ave/time 100 1 100 c_foamDEMContactSum file %s")
+            "fix             foamDEMContactAve all ave/time 1000 1 1000 c_foamDEMContactSum file %s")
+
+
+def aveTimeRows(path):
+    """The rows (step, value) of a LIGGGHTS 'fix ave/time ... file' of one
+    value; [] without the file."""
+    if not os.path.exists(path):
+        return []
+    return [(int(l.split()[0]), float(l.split()[1])) for l in open(path)
+            if l.strip() and not l.startswith("#")]
 
 
 def meanContacts(path):
     """Mean of the contact counts a CONTACTS fix wrote (None without the file)."""
-    if not os.path.exists(path):
-        return None
-    v = [float(l.split()[1]) for l in open(path) if l.strip() and not l.startswith("#")]
+    v = [x for _, x in aveTimeRows(path)]
     return sum(v) / len(v) if v else None
 
 
@@ -436,10 +455,12 @@ def workPrecision(work, nLayers, tEnd, window):
     variant the time loop's wall, the mean bed height and the mean pressure
     drop over the window, and the same over its two halves (their
     difference shows how steady the window is)."""
+    sys.path.insert(0, os.path.join(os.environ["FOAMDEM_DIR"], "python"))
+    from foamdem import caseio, fluidbed as fb
     res = []
     t0, t1 = window
     tm = 0.5 * (t0 + t1)
-    weight = nLayers * PER_LAYER * math.pi / 6 * D**3 * (RHO_P - RHO_F) * G / WIDTH**2
+    weight = fb.expected_dp(nLayers * PER_LAYER, D, RHO_P, RHO_F, G, WIDTH**2)
     for dt, interval in WP_VARIANTS:
         name = "workPrecision_%g_x%d" % (dt, interval)
         steps = int(round(tEnd / dt))
@@ -471,38 +492,30 @@ def workPrecision(work, nLayers, tEnd, window):
                                "deltaT          %.10g;" % (interval * dt)),
                               ("system/controlDict", r"endTime\s+[^;]+;",
                                "endTime         %.10g;" % tEnd)):
-            pth = os.path.join(d, rel)
-            text, n = re.subn(pat, rep, open(pth).read())
-            if n != 1:
-                raise RuntimeError("9: no '%s' in %s" % (pat, pth))
-            open(pth, "w").write(text)
+            substitute(os.path.join(d, rel), pat, rep, "9")
         say("[9] fluidBed %d particles, DEM step %g s x %d, %g s ..."
             % (nLayers * PER_LAYER, dt, interval, tEnd))
         r = coupled(d)
         r.update(dt=dt, interval=interval, steps=steps)
-        h = []
-        for line in open(os.path.join(d, "bedHeight.dat")):
-            if line.startswith("#") or not line.strip():
-                continue
-            step, z = line.split()[:2]
-            h.append((int(step) * dt, 2 * (float(z) - Z_FLOOR)))
-        pf = None
-        for root, _, files in os.walk(os.path.join(d, "postProcessing", "inletPressure")):
-            for f in files:
-                if f.endswith(".dat"):
-                    pf = os.path.join(root, f)
-        pr = []
-        for line in open(pf):
-            if line.startswith("#") or not line.strip():
-                continue
-            t, pk = line.split()[:2]
-            pr.append((float(t), RHO_F * float(pk) / weight))
+        h = [(step * dt, 2 * (z - Z_FLOOR))
+             for step, z in aveTimeRows(os.path.join(d, "bedHeight.dat"))]
+        seg = caseio.function_object_segments(d, "inletPressure", "surfaceFieldValue.dat")
+        if not seg:
+            raise RuntimeError("9: no inletPressure output in %s" % d)
+        tab = fb.read_surface_field_value(seg[0])
+        pr = list(zip(tab["Time"], RHO_F * tab["areaAverage(p)"] / weight))
+        m = re.search(r"DEM step \S+ s = ([0-9.]+) % of the Rayleigh time",
+                      open(os.path.join(d, "log.pisoDEMFoam")).read())
+        r["rayleighPercent"] = float(m.group(1)) if m else float("nan")
 
-        def mean(series, a, b):
-            v = [x for t, x in series if a <= t <= b + 1e-12]
+        def mean(series, a, b, closed):
+            """Mean over [a, b] (closed) or [a, b)."""
+            v = [x for t, x in series
+                 if t >= a - 1e-12 and (t <= b + 1e-12 if closed else t < b - 1e-12)]
             return sum(v) / len(v) if v else float("nan")
-        r["height"] = [mean(h, t0, t1), mean(h, t0, tm), mean(h, tm, t1)]
-        r["dpOverWeight"] = [mean(pr, t0, t1), mean(pr, t0, tm), mean(pr, tm, t1)]
+        r["height"] = [mean(h, t0, t1, True), mean(h, t0, tm, False), mean(h, tm, t1, True)]
+        r["dpOverWeight"] = [mean(pr, t0, t1, True), mean(pr, t0, tm, False),
+                             mean(pr, tm, t1, True)]
         r["height0"] = h[0][1] if h else float("nan")
         res.append(r)
     return res
@@ -574,12 +587,8 @@ def main():
         dFree, _ = fluidbed(work, "coupled_noForces", nLayers, steps, uIn=0,
                             demExtra=CONTACTS % "contacts.dat")
         pth = os.path.join(dFree, "constant/couplingProperties")
-        text = open(pth).read()
-        text, n1 = re.subn(r"modelType\s+A;", "modelType           B;", text)
-        text, n2 = re.subn(r"forceModels\s+\([^)]*\);", "forceModels         ();", text)
-        if n1 != 1 or n2 != 1:
-            raise RuntimeError("2e: no modelType A or forceModels in %s" % pth)
-        open(pth, "w").write(text)
+        substitute(pth, r"modelType\s+A;", "modelType           B;", "2e")
+        substitute(pth, r"forceModels\s+\([^)]*\);", "forceModels         ();", "2e")
         free = []
         runs, still, sa, saf = [], [], [], []
         for k in range(repeat):
@@ -593,6 +602,7 @@ def main():
             free[-1]["contacts"] = meanContacts(os.path.join(dFree, "contacts.dat"))
             say("[2] standalone LIGGGHTS, same system, run %d of %d ..." % (k + 1, repeat))
             sa.append(standalone(d, log="log.standalone.%d" % k))
+            sa[-1]["contacts"] = meanContacts(os.path.join(d, "contacts.standalone.dat"))
             say("[2] standalone LIGGGHTS with foamDEM's coupling fixes, run in "
                 "%d-step pieces, run %d of %d ..." % (INTERVAL, k + 1, repeat))
             saf.append(standalone(d, log="log.standaloneCoupled.%d" % k,
@@ -701,7 +711,7 @@ def table(R, out):
                          "standalone %.2f s -> with foamDEM's coupling fixes, in %d-step runs, %.2f s "
                          "(x %.2f: the fixes' own cost) -> DEM part of the coupled run with the gas at rest %.2f s "
                          "(x %.2f: the same steps and fixes, but the gas at rest still pushes the particles, "
-                         "which then touch more often: 2d). Coupled DEM / (standalone + fixes) %.2f; "
+                         "which then touch more often: 2d). (Standalone + fixes) / coupled DEM %.2f; "
                          "the like-for-like ratio is 2e"
                          % (s["loop"], R.get("interval", 20), sf["loop"], sf["loop"] / s["loop"], demStill,
                             demStill / sf["loop"], sf["loop"] / demStill),
@@ -712,14 +722,14 @@ def table(R, out):
             if nbS and nbC and cS and cC:
                 rows.append(("2d is it the same particle motion? (gas at rest)",
                              "neighbour-list builds: standalone with the fixes %d (dangerous %d), coupled %d "
-                             "(dangerous %d); mean contacts per DEM step (contact/atom summed, every 100 steps): "
+                             "(dangerous %d); mean contacts (contact/atom summed over the particles, every 1000 steps): "
                              "standalone with the fixes %.0f, coupled %.0f (x %.3f)"
                              % (nbS[0], nbS[1], nbC[0], nbC[1], cS, cC, cC / cS), "-", "-", sf["load"]))
             if "coupledNoForces" in R:
                 nf = R["coupledNoForces"]
                 demFree = nf["timers"]["dem"]
                 cF = nf.get("contacts")
-                rows.append(("2e coupled DEM / standalone with the same fixes, same particle motion "
+                rows.append(("2e (standalone with the same fixes) / coupled DEM, same particle motion "
                              "(no force on the particles: model B, forceModels ())",
                              "%.2f: DEM part of the coupled run %.2f s against %.2f s standalone with the fixes "
                              "(x %.3f); mean contacts %s against %s; total coupled / standalone %.2f "
@@ -816,12 +826,11 @@ def table(R, out):
     if "workPrecision" in R:
         wp = R["workPrecision"]
         base = wp["runs"][0]
-        tR = 1.2195e-4      # Rayleigh time of the bed's spheres [s]
         for r in wp["runs"]:
             h, dp = r["height"], r["dpOverWeight"]
             rows.append(("9 work-precision, %d particles, %g s: DEM step %g s (%.1f %% of the Rayleigh "
                          "time) x %d = CFD step %g s" % (wp["particles"], wp["time"], r["dt"],
-                                                         100 * r["dt"] / tR, r["interval"],
+                                                         r.get("rayleighPercent", float("nan")), r["interval"],
                                                          r["dt"] * r["interval"]),
                          "wall %.1f s (%.2f of the base's); over %g-%g s bed height %.2f mm (halves "
                          "%.2f / %.2f; %+.1f %% against the base), pressure drop / buoyant weight %.3f "

@@ -746,7 +746,10 @@ namespace
 Foam::labelPair Foam::foamDEM::liggghtsEngine::neighbourBuilds() const
 {
     // LIGGGHTS's own counters, the ones its run summary prints as
-    // "Neighbor list builds" and "Dangerous builds" (over all runs here)
+    // "Neighbor list builds" and "Dangerous builds". A run's set-up (pre
+    // yes) resets them: they count from the first advance (the first run
+    // sets up), or, with multisphere bodies, from the set-up after the
+    // last restart write (writeRestart)
     return labelPair
     (
         label(lmp_->neighbor->ncalls),

@@ -516,7 +516,6 @@ def workPrecision(work, nLayers, tEnd, window):
         r["height"] = [mean(h, t0, t1, True), mean(h, t0, tm, False), mean(h, tm, t1, True)]
         r["dpOverWeight"] = [mean(pr, t0, t1, True), mean(pr, t0, tm, False),
                              mean(pr, tm, t1, True)]
-        r["height0"] = h[0][1] if h else float("nan")
         res.append(r)
     return res
 

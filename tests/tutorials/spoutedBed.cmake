@@ -51,3 +51,17 @@ add_test(NAME spoutedBed.continue
 set_tests_properties(spoutedBed.continue PROPERTIES
     LABELS "integration;tutorial" TIMEOUT 900
     FIXTURES_REQUIRED spoutedBed_ci)
+
+# The fidelity representation (clumps: multisphere bodies of spheres of
+# the plates' 0.33 mm thickness and the rods' diameter, explicit drag on
+# the bodies), 1 % of the 35 % set's particles at np 2 through the CI
+# variant's compressed schedule: the fill inserts the bodies at random
+# orientations, the coupled run reads them from the fill's restart, and
+# postprocess.py --ci checks the schedule, the probe, the analysis, the
+# body count (inserted = the set's, from the first snapshot's spheres per
+# type) and that no sphere is lost and the mass is constant
+add_test(NAME parallel.spoutedBed.clumps
+    COMMAND ${TUT} spoutedBed ${FOAMDEM_WORK}/spoutedBed_clumps -ci -np 2
+            -representation clumps -fraction 0.01)
+set_tests_properties(parallel.spoutedBed.clumps PROPERTIES
+    LABELS "integration;tutorial;parallel" TIMEOUT 900 PROCESSORS 2)

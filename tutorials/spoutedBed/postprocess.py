@@ -103,6 +103,10 @@ def main():
     parts = np.genfromtxt("DEM/post/particles.dat", comments="#", dtype=None,
                           encoding=None)
     n_inserted = int(sum(int(r[4]) for r in parts))
+    # DEM/post/height.dat counts spheres: one per particle, or each clump's
+    # (column spheresPerParticle; older set-ups have one sphere each);
+    # target, replaced below by the first snapshot's count
+    n_spheres = int(sum(int(r[4]) * (int(r[10]) if len(r) > 10 else 1) for r in parts))
     windows = [tuple(r) for r in np.loadtxt("DEM/post/schedule.dat", ndmin=2)]
     hold = windows[0][2] - windows[0][1]
     setup = open("DEM/post/setupDict").read()
@@ -144,9 +148,32 @@ def main():
                         "rms %.4g Pa, f %.4g Hz, hmean %.4g m, hmax %.4g m"
                         % (r["rms"], r["fdom"], r["hmean"], r["hmax"])))
 
+    # The inserted composition, from the first snapshot (spheres of each
+    # type / spheres per particle): insertion by number fractions makes the
+    # total exact and each shape's count close to its target, so with
+    # clumps the sphere count is the snapshot's, not n_spheres
+    first = sorted(glob.glob("DEM/post/dump/snap.*.txt"),
+                   key=lambda path: int(path.split(".")[-2]))
+    t0 = read_dump(first[0], ("type",)) if first else None
+    if t0 is not None:
+        counts = np.bincount(t0[:, 0].astype(int), minlength=len(parts) + 1)
+        n_spheres = int(counts.sum())
+        bodies = [(str(r[1]), counts[int(r[0])] / (int(r[10]) if len(r) > 10 else 1),
+                   int(r[4])) for r in parts]
+        summary.append(("insertedPerShape (target)", ", ".join(
+            "%s %g (%d)" % b_ for b_ in bodies)))
+        checks.append(("particles inserted = the set's count (%d)" % n_inserted,
+                       int(round(sum(b_[1] for b_ in bodies))) == n_inserted))
+    # The coupled particles (the solver's count of bodies and free spheres
+    # at its start): one per inserted particle, so a clump is one body
+    for path in sorted(glob.glob("log.pisoDEMFoam*")):
+        m = re.search(r"DEM steps per CFD step, (\d+) particles", open(path).read())
+        if m:
+            checks.append(("%s couples %d particles (one per body)" % (path, n_inserted),
+                           int(m.group(1)) == n_inserted))
     # Checks (all runs): particles and mass conserved
-    checks.append(("no particle lost (count = inserted at every 100 Hz sample)",
-                   bool(np.all(nh == n_inserted))))
+    checks.append(("no particle lost (sphere count = inserted at every 100 Hz sample)",
+                   bool(np.all(nh == n_spheres))))
     dm = float(np.max(np.abs(mh / mh[0] - 1)))
     summary.append(("massMaxRelChange", "%.3e" % dm))
     checks.append(("mass constant (1e-12)", dm < 1e-12))
@@ -251,7 +278,7 @@ def plots(out, tp, pp, th, hh, rows, windows):
         plt.close(fig)
 
 
-def read_dump(path):
+def read_dump(path, columns=("x", "y", "z")):
     lines = open(path).read().splitlines()
     try:
         i = next(k for k, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
@@ -259,7 +286,7 @@ def read_dump(path):
         return None
     cols = lines[i].split()[2:]
     data = np.loadtxt(lines[i + 1:], ndmin=2)
-    return data[:, [cols.index("x"), cols.index("y"), cols.index("z")]]
+    return data[:, [cols.index(c) for c in columns]]
 
 
 if __name__ == "__main__":

@@ -1,23 +1,32 @@
 #!/usr/bin/python3
 """spoutedBed set-up: from constant/spoutedBedProperties, derive the cone,
-the mesh, the particles of the selected set (production representation:
-one sphere per particle, see README), the DEM and CFD steps and the inlet
-schedule, and write
+the mesh, the particles of the selected set in the selected representation
+(spheres: the production representation, one sphere per particle; clumps:
+the fidelity representation, multisphere bodies that keep the plates'
+thickness; see README), the DEM and CFD steps and the inlet schedule, and
+write
   DEM/post/setup.lig     LIGGGHTS variables and per-type commands
   DEM/post/walls.stl     the cone's and upper section's side walls
   DEM/post/setupDict     blockMesh, controlDict and 0/U entries
   constant/hoelzerSommerfeldShapes  the drag model's shape table
-  DEM/post/particles.dat one line per shape: what the sphere stands for
+  DEM/post/particles.dat one line per shape: what the sphere (or clump)
+                         stands for
+  DEM/post/representation  the engine's shapedSpheres entry
+  DEM/post/<shape>.multisphere, .liggghts  the clumps' templates (clumps)
 
 --ci          the CI variant (ci* entries)
 --set NAME    override the dictionary's set
 --np N        DEM processor grid (N 1 1) and the CFD decomposition
+--representation spheres|clumps   override the dictionary's representation
+--fraction F  keep this fraction of each shape's particles (default 1,
+              ciFraction with --ci)
 --continue    start from the latest time with a DEM restart
 """
 import argparse
 import math
 import os
 import re
+import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.environ.get("FOAMDEM_DIR", "../.."), "python"))
@@ -33,6 +42,14 @@ def read_props(case):
         props[m.group(1)] = float(m.group(2))
     m = re.search(r"(?m)^\s*set\s+(\w+)\s*;", text)
     props["set"] = m.group(1)
+    m = re.search(r"(?m)^\s*representation\s+(\w+)\s*;", text)
+    props["representation"] = m.group(1) if m else "spheres"
+    m = re.search(r"clumpSpheres\s*\((.*?)\n\)\s*;", text, flags=re.S)
+    props["clumpSpheres"] = {}
+    if m:
+        for row in re.findall(r"\(([^()]*)\)", m.group(1)):
+            f = row.split()
+            props["clumpSpheres"][f[0]] = [int(v) for v in f[1:]]
     m = re.search(r"plateaus\s*\(([^)]*)\)", text)
     props["plateaus"] = [float(v) for v in m.group(1).split()]
     m = re.search(r"shapes\s*\((.*?)\n\)\s*;", text, flags=re.S)
@@ -61,6 +78,43 @@ def rayleigh_time(r, rho, E, nu):
     return math.pi * r * math.sqrt(rho / G) / (0.1631 * nu + 0.8766)
 
 
+def clump_template(row, seed, post):
+    """Write the row's multisphere template with tools/shapes/foamDEMShapes
+    (mass and inertia of the ideal shape at the row's density, i.e. the
+    table's mass) and return the lines to include."""
+    tool = os.path.join(os.environ.get("FOAMDEM_DIR", "../.."), "tools", "shapes",
+                        "foamDEMShapes")
+    cmd = [sys.executable, tool, "--name", row["name"], "--type", str(row["type"]),
+           "--atom-type", str(row["type"]), "--density", "%.10g" % row["rho"],
+           "--seed", str(seed), "--ideal-mass", "--allow-gaps", "--out", post]
+    if row["kind"] == "plate":
+        cmd += ["--shape", "plate", "--length", "%.10g" % row["length"],
+                "--width", "%.10g" % row["width"], "--thickness", "%.10g" % row["thickness"],
+                "--spheres-along", str(row["layout"][0]),
+                "--spheres-across", str(row["layout"][1])]
+    else:
+        cmd += ["--shape", "spherocylinder", "--diameter", "%.10g" % row["width"],
+                "--length", "%.10g" % row["length"], "--spheres", str(row["layout"][0])]
+    out = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         universal_newlines=True)
+    with open(os.path.join(post, "%s.report" % row["name"]), "w") as f:
+        f.write(out.stdout)
+    if out.returncode != 0:
+        sys.exit("prepare.py: foamDEMShapes failed for %s:\n%s" % (row["name"], out.stdout))
+    lines = []
+    for line in open(os.path.join(post, "%s.liggghts" % row["name"])):
+        if line.startswith("fix "):
+            lines.append(line.replace("spheres file %s.multisphere" % row["name"],
+                                      "spheres file %s/%s.multisphere"
+                                      % (post.replace("./", "", 1), row["name"]))
+                         .replace("pts_%s " % row["name"], "pts%d " % row["type"])
+                         .replace("ntry 1000000", "ntry 100000"))
+    if len(lines) != 1:
+        sys.exit("prepare.py: foamDEMShapes wrote %d template lines for %s"
+                 % (len(lines), row["name"]))
+    return lines[0]
+
+
 def schedule(props, ci):
     """Inlet velocity table (t, U) and the plateaus' windows: a linear ramp
     to the first plateau over rampTime, then each plateau for plateauTime
@@ -87,6 +141,8 @@ def main():
     ap.add_argument("--set", default=None)
     ap.add_argument("--np", type=int, default=1)
     ap.add_argument("--continue", dest="cont", action="store_true")
+    ap.add_argument("--representation", default=None)
+    ap.add_argument("--fraction", type=float, default=None)
     args = ap.parse_args()
     case = "."
     P = read_props(case)
@@ -99,6 +155,11 @@ def main():
     if set_name not in P["sets"]:
         sys.exit("prepare.py: unknown set '%s' in %s; valid sets: %s"
                  % (set_name, PROPS, " ".join(sorted(P["sets"]))))
+    rep = args.representation or P["representation"]
+    if rep not in ("spheres", "clumps"):
+        sys.exit("prepare.py: unknown representation '%s' (%s, command line or"
+                 " keyword representation); valid: spheres clumps" % (rep, PROPS))
+    clumps = rep == "clumps"
     grams = P["sets"][set_name]
     if len(grams) != len(P["shapes"]):
         sys.exit("prepare.py: set %s lists %d masses for %d shapes"
@@ -116,25 +177,45 @@ def main():
     nCone = max(2, int(round(1 + math.log(b / a) / math.log(r))))
     grading = b / a
 
-    # Particles: one sphere per particle, of the ideal shape's volume and
-    # the table's mass (density = mass / ideal volume)
-    frac = P["ciFraction"] if args.ci else 1.0
+    # Particles. spheres: one sphere per particle, of the ideal shape's
+    # volume and the table's mass (density = mass / ideal volume). clumps:
+    # a multisphere body of spheres of the plate's thickness or the rod's
+    # diameter (clumpSpheres layouts), with the table's mass and the ideal
+    # shape's inertia scaled by the same ratio (the same density)
+    frac = args.fraction if args.fraction is not None else \
+        (P["ciFraction"] if args.ci else 1.0)
     E, nu = P["youngsModulus"], P["poissonsRatio"]
-    rows, dt_r = [], []
+    rows, dt_r, dt_prod = [], [], []
     for t, (s, g) in enumerate(zip(P["shapes"], grams), start=1):
         V = ideal_volume(s)
         dv = (6 * V / math.pi) ** (1 / 3)
         rho = s["mass"] / V
         n = int(round(frac * g * 1e-3 / s["mass"]))
+        r_contact = dv / 2
+        layout = [1]
+        if clumps:
+            layout = P["clumpSpheres"].get(s["name"])
+            if not layout or len(layout) != (2 if s["kind"] == "plate" else 1):
+                sys.exit("prepare.py: %s: clumpSpheres has no valid layout for %s"
+                         " (plate: spheres along and across; rod: spheres)"
+                         % (PROPS, s["name"]))
+            r_contact = (s["thickness"] if s["kind"] == "plate" else s["width"]) / 2
         rows.append(dict(s, type=t, grams=g, volume=V, dv=dv, rho=rho, n=n,
-                         massRatio=s["mass"] / (P["rhoApparent"] * V)))
+                         massRatio=s["mass"] / (P["rhoApparent"] * V),
+                         layout=layout, rContact=r_contact,
+                         spheres=layout[0] * (layout[1] if len(layout) > 1 else 1)))
         if n > 0:
-            dt_r.append(rayleigh_time(dv / 2, rho, E, nu))
+            dt_r.append(rayleigh_time(r_contact, rho, E, nu))
+            dt_prod.append(rayleigh_time(dv / 2, rho, E, nu))
     N = sum(row["n"] for row in rows)
     # The DEM step: at most rayleighFraction of the smallest Rayleigh time,
     # and such that the write interval is a whole number of CFD steps (so
-    # that the fields and the DEM restarts are written at the same times)
+    # that the fields and the DEM restarts are written at the same times).
+    # Clumps keep about the production representation's CFD step: more DEM
+    # steps per CFD step
     nc = int(P["couplingInterval"])
+    if clumps:
+        nc = max(1, int(round(nc * min(dt_prod) / min(dt_r))))
     n_write = int(math.ceil(p("writeInterval") / (nc * P["rayleighFraction"] * min(dt_r))))
     dt_cfd = p("writeInterval") / n_write
     dt = dt_cfd / nc
@@ -181,7 +262,7 @@ def main():
         "settleSteps": steps(p("settleTime")),
         "heightSteps": steps(P["heightInterval"]),
         "writeSteps": steps(p("writeInterval")),
-        "nProcX": args.np,
+        "nProcX": args.np, "clumps": int(clumps),
     }
     start_time, restart, fresh = "0", "DEM/post/filled.restart", 1
     if args.cont:
@@ -204,17 +285,29 @@ def main():
             f.write("variable %-22s equal %.12g\n" % (k, v))
         f.write("variable %-22s equal %d\n" % ("fresh", fresh))
         f.write("variable %-22s string %s\n" % ("restartFile", restart))
+        # clumps: no rolling resistance (the true shape resists rolling),
+        # random initial orientations
+        f.write('variable %-22s string "%s"\n' % (
+            "rollingModel", "rolling_friction off" if clumps else "rolling_friction epsd2"))
+        f.write('variable %-22s string "%s"\n' % (
+            "insertOrientation", "orientation random" if clumps else "verbose no"))
     # Templates and the distribution (number fractions, exact)
     seeds = [15485863, 15485867, 32452843, 32452867, 49979687, 49979693,
              67867967, 67867979, 86028121, 86028157]
+    if clumps and [row["type"] for row in present] != list(range(1, len(present) + 1)):
+        sys.exit("prepare.py: clumps need the set's shapes first in the shape"
+                 " list (multisphere types are consecutive from 1)")
     with open(os.path.join(post, "templates.lig"), "w") as f:
-        f.write("# Generated by prepare.py: one sphere template per shape of set %s\n"
-                % set_name)
+        f.write("# Generated by prepare.py: one %s template per shape of set %s\n"
+                % ("multisphere" if clumps else "sphere", set_name))
         dist = []
         for k, row in enumerate(present):
-            f.write("fix pts%d all particletemplate/sphere %d atom_type %d "
-                    "density constant %.10g radius constant %.10g\n"
-                    % (row["type"], seeds[k], row["type"], row["rho"], row["dv"] / 2))
+            if clumps:
+                f.write(clump_template(row, seeds[k], post))
+            else:
+                f.write("fix pts%d all particletemplate/sphere %d atom_type %d "
+                        "density constant %.10g radius constant %.10g\n"
+                        % (row["type"], seeds[k], row["type"], row["rho"], row["dv"] / 2))
             dist.append("pts%d %.12g" % (row["type"], row["n"] / N))
         f.write("fix pdd all particledistribution/discrete/numberbased %d %d %s\n"
                 % (seeds[len(present)], len(present), " ".join(dist)))
@@ -243,14 +336,26 @@ def main():
         f.write("fix m6 all property/global characteristicVelocity scalar %.6g\n"
                 % P["characteristicVelocity"])
     with open(os.path.join(post, "particles.dat"), "w") as f:
-        f.write("# set %s%s: one sphere per particle, d = d_v of the ideal shape,"
-                " density = table mass / ideal volume\n" % (set_name, " (CI)" if args.ci else ""))
+        if clumps:
+            f.write("# set %s%s, representation clumps: multisphere bodies of"
+                    " spheresPerParticle spheres of the plate's thickness or the rod's"
+                    " diameter; mass = table mass, inertia = ideal shape's x mass ratio;"
+                    " fraction %g\n" % (set_name, " (CI)" if args.ci else "", frac))
+        else:
+            f.write("# set %s%s, representation spheres: one sphere per particle, d ="
+                    " d_v of the ideal shape, density = table mass / ideal volume;"
+                    " fraction %g\n" % (set_name, " (CI)" if args.ci else "", frac))
         f.write("# type name kind grams count mass_kg idealVolume_m3 d_v_m density_kg_m3"
-                " massOverIdealMass\n")
+                " massOverIdealMass spheresPerParticle\n")
         for row in rows:
-            f.write("%d %s %s %.4g %d %.6e %.6e %.6e %.2f %.3f\n"
+            f.write("%d %s %s %.4g %d %.6e %.6e %.6e %.2f %.3f %d\n"
                     % (row["type"], row["name"], row["kind"], row["grams"], row["n"],
-                       row["mass"], row["volume"], row["dv"], row["rho"], row["massRatio"]))
+                       row["mass"], row["volume"], row["dv"], row["rho"], row["massRatio"],
+                       row["spheres"]))
+    with open(os.path.join(post, "representation"), "w") as f:
+        f.write("// Generated by prepare.py: representation %s\n" % rep)
+        f.write("dragIntegration %s;\n" % ("explicit" if clumps else "implicit"))
+        f.write("shapedSpheres   %s;\n" % ("false" if clumps else "true"))
 
     # Drag model shape table, by atom type
     with open(os.path.join(case, "constant", "hoelzerSommerfeldShapes"), "w") as f:
@@ -290,11 +395,12 @@ def main():
         for v, t0, t1 in windows:
             f.write("%.6g %.9g %.9g\n" % (v, t0, t1))
 
-    print("spoutedBed%s: set %s, %d particles (%s), cone %.4g m tall (%d cells,"
+    print("spoutedBed%s: set %s, representation %s (%d spheres), %d particles (%s), cone %.4g m tall (%d cells,"
           " grading %.3g), upper %.4g m (%d cells), %d x %d cells across; DEM step"
           " %.3g s (%.0f %% of the smallest Rayleigh time %.3g s), CFD step %.3g s;"
           " schedule to %.4g s; start %s"
-          % (" (CI)" if args.ci else "", set_name, N,
+          % (" (CI)" if args.ci else "", set_name, rep,
+             sum(row["n"] * row["spheres"] for row in rows), N,
              ", ".join("%s %d" % (row["name"], row["n"]) for row in present),
              Hc, nCone, grading, Hu, int(p("nUpper")), int(p("nWidth")),
              int(P["nThickness"]), dt, 100 * dt / min(dt_r), min(dt_r), dt_cfd,

@@ -63,6 +63,47 @@ class Plate:
         return b * c * abs(n[0]) + a * c * abs(n[1]) + a * b * abs(n[2])
 
 
+class Clump:
+    """A multisphere body: equal spheres of radius r at the given centres
+    (body frame). Its projected area is the union of the spheres' shadows,
+    discs of radius r, measured on a raster of cells of size h (default
+    r/200); the volume is given (it is the union's, e.g. from
+    tools/shapes/foamDEMShapes), not computed here."""
+
+    def __init__(self, centres, r, volume=None):
+        self.centres = np.asarray(centres, float).reshape(-1, 3)
+        self.r = float(r)
+        self._volume = volume
+
+    def volume(self):
+        if self._volume is None:
+            raise ValueError("Clump: volume not given")
+        return self._volume
+
+    def projected_area(self, n, h=None):
+        h = self.r / 200 if h is None else h
+        f, p, q = _normal_basis(n)
+        u, v = self.centres @ p, self.centres @ q
+        r = self.r
+        xs = np.arange(u.min() - r, u.max() + r + h, h) + 0.5 * h
+        ys = np.arange(v.min() - r, v.max() + r + h, h) + 0.5 * h
+        X, Y = np.meshgrid(xs, ys, indexing="ij")
+        covered = np.zeros(X.shape, bool)
+        for cu, cv in zip(u, v):
+            i0, i1 = np.searchsorted(xs, [cu - r, cu + r])
+            j0, j1 = np.searchsorted(ys, [cv - r, cv + r])
+            sub = (X[i0:i1, j0:j1] - cu) ** 2 + (Y[i0:i1, j0:j1] - cv) ** 2 <= r * r
+            covered[i0:i1, j0:j1] |= sub
+        return float(covered.sum()) * h * h
+
+
+def read_multisphere(path):
+    """Centres and radii of a LIGGGHTS multisphere template file (x y z r per
+    line, '#' comments)."""
+    d = np.loadtxt(path, comments="#", ndmin=2)
+    return d[:, :3], d[:, 3]
+
+
 def d_v(shape):
     return (6 * shape.volume() / math.pi) ** (1.0 / 3.0)
 

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
 """compareWindow.py CASE [CASE ...] --window T0 T1 [--fmin F] [--out FILE]
+                  [--plot FILE.png] [--labels L1 L2 ...]
 
 The plateau statistics of postprocess.py (python/foamdem/spouted.py: the
 gauge pressure's RMS deviation and dominant frequency at the probe, the
@@ -10,7 +11,9 @@ segments joined as postprocess.py joins them). For the mesh check
 run's state, compared over the same stretch of a plateau. Prints a table
 and, with --out, writes it (one line per case: case rms_Pa
 dominantFrequency_Hz maxHeightMean_m maxHeightMax_m samples cells).
-Exits 1 if a case's data do not cover the window.
+With --plot, a figure of the cases' pressure, highest particle and
+amplitude spectrum over the window (one colour per case, --labels for the
+legend). Exits 1 if a case's data do not cover the window.
 """
 import argparse
 import os
@@ -41,9 +44,11 @@ def main():
     ap.add_argument("--window", type=float, nargs=2, required=True)
     ap.add_argument("--fmin", type=float, default=0.0)
     ap.add_argument("--out")
+    ap.add_argument("--plot")
+    ap.add_argument("--labels", nargs="+")
     args = ap.parse_args()
     t0, t1 = args.window
-    lines, status = [], 0
+    lines, status, series = [], 0, []
     for case in args.cases:
         tp, p, hd = pp.load_signals(case)
         rows = spouted.plateau_statistics(tp, p, hd[:, 0], hd[:, 1], [(0.0, t0, t1)],
@@ -54,6 +59,10 @@ def main():
             status = 1
             continue
         r = rows[0]
+        ps, pv = spouted.select(tp, p, t0, t1)
+        hs, hv = spouted.select(hd[:, 0], hd[:, 1], t0, t1)
+        f, a = spouted.amplitude_spectrum(ps, pv)
+        series.append((case, ps, pv, hs, hv, f, a, r))
         lines.append("%s %.6g %.6g %.6g %.6g %d %d" % (case, r["rms"], r["fdom"], r["hmean"],
                                                        r["hmax"], r["n"], cells(case)))
     head = ("# spoutedBed, window %g-%g s: case rms_Pa dominantFrequency_Hz"
@@ -63,6 +72,31 @@ def main():
     if args.out:
         with open(args.out, "w") as f:
             f.write(head + "\n" + "\n".join(lines) + "\n")
+    if args.plot and series:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        labels = args.labels or [s[0] for s in series]
+        fig, ax = plt.subplots(3, 1, figsize=(7, 7.5))
+        for (case, ps, pv, hs, hv, f, a, r), lab in zip(series, labels):
+            line, = ax[0].plot(ps, pv, lw=0.5, label="%s: s %.3g Pa" % (lab, r["rms"]))
+            ax[1].plot(hs, hv, lw=0.8, color=line.get_color(),
+                       label="%s: mean %.3g m, max %.3g m" % (lab, r["hmean"], r["hmax"]))
+            ax[2].plot(f, a, lw=0.8, color=line.get_color(),
+                       label="%s: %.3g Hz" % (lab, r["fdom"]))
+        ax[0].set_ylabel("gauge pressure [Pa]")
+        ax[1].set_ylabel("highest particle [m]")
+        for k in (0, 1):
+            ax[k].set_xlabel("t [s]")
+        ax[2].set_xlabel("f [Hz]")
+        ax[2].set_ylabel("amplitude [Pa]")
+        ax[2].set_xlim(0, 30)
+        for k in range(3):
+            ax[k].legend(fontsize=7)
+        ax[0].set_title("window %g-%g s" % (t0, t1), fontsize=9)
+        fig.tight_layout()
+        fig.savefig(args.plot, dpi=80)
+        plt.close(fig)
     return status
 
 

@@ -48,6 +48,9 @@ def main():
     ap.add_argument("--labels", nargs="+")
     args = ap.parse_args()
     t0, t1 = args.window
+    if args.labels and len(args.labels) != len(args.cases):
+        sys.exit("compareWindow.py: %d labels for %d cases" % (len(args.labels), len(args.cases)))
+    labels = dict(zip(args.cases, args.labels or args.cases))
     lines, status, series = [], 0, []
     for case in args.cases:
         tp, p, hd = pp.load_signals(case)
@@ -76,9 +79,9 @@ def main():
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
-        labels = args.labels or [s[0] for s in series]
         fig, ax = plt.subplots(3, 1, figsize=(7, 7.5))
-        for (case, ps, pv, hs, hv, f, a, r), lab in zip(series, labels):
+        for case, ps, pv, hs, hv, f, a, r in series:
+            lab = labels[case]
             line, = ax[0].plot(ps, pv, lw=0.5, label="%s: s %.3g Pa" % (lab, r["rms"]))
             ax[1].plot(hs, hv, lw=0.8, color=line.get_color(),
                        label="%s: mean %.3g m, max %.3g m" % (lab, r["hmean"], r["hmax"]))

@@ -6,7 +6,9 @@ and particle snapshots; checks.
 
 Reads postProcessing/pressureProbe/*/p (every CFD step),
 postProcessing/inletVelocity/*/surfaceFieldValue.dat, DEM/post/height.dat
-(100 Hz: time, highest particle centre, particle count, total mass),
+(100 Hz: time, highest sphere centre, sphere count, total mass; with
+clumps the highest of the clumps' spheres, up to half a body length above
+its body's centre),
 DEM/post/schedule.dat and DEM/post/particles.dat (prepare.py), the dumps
 DEM/post/dump/snap.*.txt.
 
@@ -19,8 +21,10 @@ of the reference's 4 s plateaus); the first plateau counts from the end of
 the ramp. The dominant frequency is searched above --fmin Hz.
 
 --ci        CI checks: the schedule is applied, the probe is written every
-            CFD step, the analysis gives finite values for every plateau,
-            no particle is lost and the mass is constant.
+            CFD step, the analysis gives finite values for every plateau.
+All runs: the set's particles were inserted (the first snapshot's spheres
+per type over spheres per particle), the solver couples one particle per
+body, no sphere is lost and the mass is constant.
 --no-plot   skip the PNGs
 --skip S    drop the first S seconds of each window instead of 1/8 of the
             hold (to compare a run started later within a plateau, e.g.
@@ -100,6 +104,8 @@ def main():
 
     head = open("DEM/post/particles.dat").readline()
     set_name = re.search(r"# set (\w+)", head).group(1)
+    m = re.search(r"representation (\w+).*; fraction ([-+0-9.eE]+)", head)
+    representation, fraction = (m.group(1), float(m.group(2))) if m else ("spheres", None)
     parts = np.genfromtxt("DEM/post/particles.dat", comments="#", dtype=None,
                           encoding=None)
     n_inserted = int(sum(int(r[4]) for r in parts))
@@ -121,9 +127,10 @@ def main():
     out = os.path.join("results", set_name)
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, "plateaus.dat"), "w") as f:
-        f.write("# spoutedBed, set %s%s: per inlet velocity plateau, in its window"
-                " (first %s and last 1/16 dropped)\n"
-                % (set_name, " (CI)" if args.ci else "",
+        f.write("# spoutedBed, set %s%s, representation %s%s: per inlet velocity"
+                " plateau, in its window (first %s and last 1/16 dropped)\n"
+                % (set_name, " (CI)" if args.ci else "", representation,
+                   "" if fraction in (None, 1.0) else ", fraction %g of the particles" % fraction,
                    "1/8" if args.skip is None else "%g s" % skip))
         f.write("# gauge pressure at the probe (rho p, p = 0 at the outlet, no"
                 " hydrostatic head): RMS deviation (N - 1) and dominant frequency of its"
@@ -137,7 +144,9 @@ def main():
             f.write("%.3g %.6g %.6g %.6g %.6g\n" % (r["u"], r["rms"], r["fdom"],
                                                   r["hmean"], r["hmax"]))
 
-    summary = [("set", set_name), ("particlesInserted", "%d" % n_inserted),
+    summary = [("set", set_name), ("representation", representation),
+               ("fraction", "%g" % (1.0 if fraction is None else fraction)),
+               ("particlesInserted", "%d" % n_inserted),
                ("cfdStep_s", "%.6g" % dt_cfd),
                ("probeSamples", "%d" % tp.size)]
     for r in rows:

@@ -20,7 +20,9 @@ write
 --representation spheres|clumps   override the dictionary's representation
 --fraction F  keep this fraction of each shape's particles (default 1,
               ciFraction with --ci)
---continue    start from the latest time with a DEM restart
+--continue    start from the latest time with a DEM restart; the set, the
+              representation and the fraction are the run's own (from
+              DEM/post/particles.dat) unless given, and must agree with it
 """
 import argparse
 import math
@@ -30,7 +32,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.environ.get("FOAMDEM_DIR", "../.."), "python"))
-from foamdem import caseio, shapes  # noqa: E402
+from foamdem import caseio  # noqa: E402
 
 PROPS = "constant/spoutedBedProperties"
 
@@ -78,6 +80,32 @@ def rayleigh_time(r, rho, E, nu):
     return math.pi * r * math.sqrt(rho / G) / (0.1631 * nu + 0.8766)
 
 
+def continued_run(args, path):
+    """A continued run keeps its set, representation and fraction: take
+    them from the first run's DEM/post/particles.dat header where the
+    command line does not give them, and refuse a command line that
+    differs."""
+    if not os.path.exists(path):
+        return
+    head = open(path).readline()
+    m = re.match(r"# set (\w+)( \(CI\))?, representation (\w+):.*; fraction ([-+0-9.eE]+)", head)
+    if not m:
+        return          # a set-up of an older version: the command line's
+    own = {"set": m.group(1), "representation": m.group(3), "fraction": float(m.group(4))}
+    given = {"set": args.set, "representation": args.representation,
+             "fraction": args.fraction}
+    for key, v in given.items():
+        if v is not None and v != own[key]:
+            sys.exit("prepare.py --continue: the run was set up with %s %s (%s), not %s"
+                     % (key, own[key], path, v))
+    if bool(m.group(2)) != args.ci:
+        sys.exit("prepare.py --continue: the run was set up %s the CI variant (%s)"
+                 % ("as" if m.group(2) else "without", path))
+    args.fraction = own["fraction"]
+    args.set = own["set"]
+    args.representation = own["representation"]
+
+
 def clump_template(row, seed, post):
     """Write the row's multisphere template with tools/shapes/foamDEMShapes
     (mass and inertia of the ideal shape at the row's density, i.e. the
@@ -120,6 +148,7 @@ def clump_errors(rows, post):
     volume, surface, Phi (foamDEMShapes's report) and Phi_perp face-on (flow
     along the plate's thickness, across the rod) and edge-on (along the
     length), each with its own d_v; the mass is the table's in both."""
+    from foamdem import shapes  # numpy: only the clumps need it
     with open(os.path.join(post, "clumpErrors.dat"), "w") as f:
         f.write("# The clumps (representation clumps) against their ideal shapes:"
                 " (clump/ideal - 1) in %; Phi_perp = (pi d_v^2/4) / shadow area,"
@@ -182,11 +211,16 @@ def main():
     ap.add_argument("--set", default=None)
     ap.add_argument("--np", type=int, default=1)
     ap.add_argument("--continue", dest="cont", action="store_true")
-    ap.add_argument("--representation", default=None)
+    ap.add_argument("--representation", default=None, choices=("spheres", "clumps"))
     ap.add_argument("--fraction", type=float, default=None)
     args = ap.parse_args()
     case = "."
     P = read_props(case)
+    if args.cont:
+        continued_run(args, os.path.join(case, "DEM", "post", "particles.dat"))
+    if args.fraction is not None and not 0 < args.fraction <= 1:
+        sys.exit("prepare.py: --fraction %g: the fraction of each shape's particles"
+                 " must be in (0, 1]" % args.fraction)
 
     def p(key):
         return P["ci" + key[0].upper() + key[1:]] if args.ci and \
@@ -249,6 +283,8 @@ def main():
             dt_r.append(rayleigh_time(r_contact, rho, E, nu))
             dt_prod.append(rayleigh_time(dv / 2, rho, E, nu))
     N = sum(row["n"] for row in rows)
+    if N == 0:
+        sys.exit("prepare.py: set %s with fraction %g has no particles" % (set_name, frac))
     # The DEM step: at most rayleighFraction of the smallest Rayleigh time,
     # and such that the write interval is a whole number of CFD steps (so
     # that the fields and the DEM restarts are written at the same times).
@@ -331,28 +367,30 @@ def main():
         f.write('variable %-22s string "%s"\n' % (
             "rollingModel", "rolling_friction off" if clumps else "rolling_friction epsd2"))
         f.write('variable %-22s string "%s"\n' % (
-            "insertOrientation", "orientation random" if clumps else "verbose no"))
+            "insertOrientation", "orientation random" if clumps else "verbose yes"))
     # Templates and the distribution (number fractions, exact)
     seeds = [15485863, 15485867, 32452843, 32452867, 49979687, 49979693,
              67867967, 67867979, 86028121, 86028157]
-    if clumps and [row["type"] for row in present] != list(range(1, len(present) + 1)):
-        sys.exit("prepare.py: clumps need the set's shapes first in the shape"
-                 " list (multisphere types are consecutive from 1)")
     with open(os.path.join(post, "templates.lig"), "w") as f:
         f.write("# Generated by prepare.py: one %s template per shape of set %s\n"
                 % ("multisphere" if clumps else "sphere", set_name))
         dist = []
-        for k, row in enumerate(present):
-            if clumps:
+        if clumps:
+            # a template for every shape, so that the multisphere types are
+            # 1..6 (LIGGGHTS indexes its per-type data by them); the
+            # distribution lists the set's
+            for k, row in enumerate(rows):
                 f.write(clump_template(row, seeds[k], post))
-            else:
+        for k, row in enumerate(present):
+            if not clumps:
                 f.write("fix pts%d all particletemplate/sphere %d atom_type %d "
                         "density constant %.10g radius constant %.10g\n"
                         % (row["type"], seeds[k], row["type"], row["rho"], row["dv"] / 2))
             dist.append("pts%d %.12g" % (row["type"], row["n"] / N))
+        k = len(rows) if clumps else len(present)
         f.write("fix pdd all particledistribution/discrete/numberbased %d %d %s\n"
-                % (seeds[len(present)], len(present), " ".join(dist)))
-        f.write("variable insertSeed equal %d\n" % seeds[len(present) + 1])
+                % (seeds[k], len(present), " ".join(dist)))
+        f.write("variable insertSeed equal %d\n" % seeds[k + 1])
     # Materials: types 1..6 the shapes, the last type the walls; friction
     # 1.0 between particles, 0.9 with the walls; one restitution and one
     # rolling friction for all pairs

@@ -67,18 +67,12 @@ class Clump:
     """A multisphere body: equal spheres of radius r at the given centres
     (body frame). Its projected area is the union of the spheres' shadows,
     discs of radius r, measured on a raster of cells of size h (default
-    r/200); the volume is given (it is the union's, e.g. from
-    tools/shapes/foamDEMShapes), not computed here."""
+    r/200). Its volume is not computed here (tools/shapes/foamDEMShapes
+    reports the union's)."""
 
-    def __init__(self, centres, r, volume=None):
+    def __init__(self, centres, r):
         self.centres = np.asarray(centres, float).reshape(-1, 3)
         self.r = float(r)
-        self._volume = volume
-
-    def volume(self):
-        if self._volume is None:
-            raise ValueError("Clump: volume not given")
-        return self._volume
 
     def projected_area(self, n, h=None):
         h = self.r / 200 if h is None else h

@@ -174,7 +174,7 @@ def clump_errors(rows, post):
                 if row["kind"] == "plate" else shapes.Spherocylinder(row["width"], row["length"])
             centres, radii = shapes.read_multisphere(
                 os.path.join(post, "%s.multisphere" % row["name"]))
-            clump = shapes.Clump(centres, radii[0], V1)
+            clump = shapes.Clump(centres, radii[0])
             out = [row["name"], "%d" % row["spheres"], "%+.2f" % (100 * (V1 / V0 - 1)),
                    "%+.2f" % (100 * (S1 / S0 - 1)), "%.4f" % phi0, "%.4f" % phi1,
                    "%+.2f" % (100 * (phi1 / phi0 - 1))]
@@ -277,7 +277,7 @@ def main():
             r_contact = (s["thickness"] if s["kind"] == "plate" else s["width"]) / 2
         rows.append(dict(s, type=t, grams=g, volume=V, dv=dv, rho=rho, n=n,
                          massRatio=s["mass"] / (P["rhoApparent"] * V),
-                         layout=layout, rContact=r_contact,
+                         layout=layout,
                          spheres=layout[0] * (layout[1] if len(layout) > 1 else 1)))
         if n > 0:
             dt_r.append(rayleigh_time(r_contact, rho, E, nu))

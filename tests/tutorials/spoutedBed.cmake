@@ -52,6 +52,23 @@ set_tests_properties(spoutedBed.continue PROPERTIES
     LABELS "integration;tutorial" TIMEOUT 900
     FIXTURES_REQUIRED spoutedBed_ci)
 
+# A run continued on more processes than it ran on (the plates run went
+# from np 1 to np 2 at 3.5 s): the np 1 CI run continued from its 0.2 s
+# write by ./Allrun -ci -np 2 -continue, which decomposes that write; the
+# solver runs on 2 processes and the 100 Hz row 0.01 s later agrees with
+# the np 1 run's to 1e-6 relative (measured 8.6e-9 for the highest
+# particle, 6.8e-14 for the mass, 2026-12-06: a different summation
+# order). Seen failing with Allrun's decomposition on continue removed (the
+# solver ran on 1 process)
+add_test(NAME parallel.spoutedBed.continueNp2
+    COMMAND ${CONTINUATION_TUT} ${FOAMDEM_WORK}/spoutedBed
+            ${FOAMDEM_WORK}/spoutedBed_continueNp2 0.2
+            --history DEM/post/height.dat:0.21:1e-6 --nprocs 2
+            -- -ci -np 2)
+set_tests_properties(parallel.spoutedBed.continueNp2 PROPERTIES
+    LABELS "integration;tutorial;parallel" TIMEOUT 900 PROCESSORS 2
+    FIXTURES_REQUIRED spoutedBed_ci)
+
 # The fidelity representation (clumps: multisphere bodies of spheres of
 # the plates' 0.33 mm thickness and the rods' diameter, explicit drag on
 # the bodies), 1 % of the 35 % set's particles at np 2 through the CI
@@ -81,5 +98,23 @@ add_test(NAME parallel.spoutedBed.clumps.continue
             --history DEM/post/height.dat:0.209984667056107:1e-9
             -- -ci -np 2)
 set_tests_properties(parallel.spoutedBed.clumps.continue PROPERTIES
+    LABELS "integration;tutorial;parallel" TIMEOUT 900 PROCESSORS 2
+    FIXTURES_REQUIRED spoutedBed_clumps)
+
+# A fill stopped by a kill and continued (the full-bed fidelity fill takes
+# longer than a session): the clumps run above, its fill started again,
+# killed (process group, SIGKILL) once it has written its first restart
+# (DEM/post/fill.restart, renamed into place after each segment) and
+# continued by ./Allrun -continue; the continued fill starts after step 1
+# from that restart and its FILL line (spheres, kinetic energy, highest
+# centre) equals the straight fill's exactly (measured 0, 2026-12-06: same
+# segments, same restarts), and the coupled run and its checks pass. Seen
+# failing with the continued fill's multisphere fix renamed (the bodies
+# not read): LIGGGHTS stops, no FILL line
+add_test(NAME parallel.spoutedBed.clumps.fillContinue
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkFillContinuation
+            ${FOAMDEM_WORK}/spoutedBed_clumps ${FOAMDEM_WORK}/spoutedBed_clumps_fill
+            -- -ci -np 2 -representation clumps -fraction 0.01)
+set_tests_properties(parallel.spoutedBed.clumps.fillContinue PROPERTIES
     LABELS "integration;tutorial;parallel" TIMEOUT 900 PROCESSORS 2
     FIXTURES_REQUIRED spoutedBed_clumps)

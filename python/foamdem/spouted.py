@@ -77,3 +77,53 @@ def plateau_statistics(tp, p, th, h, windows, skip_start, skip_end, fmin=0.0):
                      "hmean": float(np.mean(hs)), "hmax": float(np.max(hs)),
                      "f": f, "a": a})
     return rows
+
+
+def moving_average(t, x, width):
+    """x averaged over a centred window of `width` seconds (on the
+    signal's uniform grid of its median spacing)."""
+    tu, xu, dt = uniform(t, x)
+    n = max(1, int(round(width / dt)))
+    kernel = np.ones(n) / n
+    # 'valid' part only, so no average is made of a partial window
+    xs = np.convolve(xu, kernel, mode="valid")
+    ts = tu[(n - 1) // 2:(n - 1) // 2 + xs.size]
+    return ts, xs
+
+
+def ramp_onset(tp, p, th, h, tu, u, t_end, width=0.05, rise=0.002, u_fixed=()):
+    """The start of spouting on the inlet's ramp (0 to t_end), from the
+    signals of one run: the gauge pressure p (times tp), the highest
+    particle h (times th) and the inlet velocity u (times tu).
+
+    - onset: the first time the highest particle stands `rise` [m] above
+      its first value (the bed's top starts to move), with the inlet
+      velocity then;
+    - peak: the largest `width`-second moving average of p on the ramp,
+      its time and inlet velocity (the bed's largest pressure drop, as the
+      spout breaks through);
+    - fixed: for each velocity in u_fixed below the onset velocity, the
+      `width`-second average of p around the time the inlet reaches it
+      (the fixed bed's pressure, which its packing sets).
+
+    "complete" is False while the peak may still lie ahead: no onset yet,
+    or the moving average's largest value is in its last `width`."""
+    tp, p, th, h, tu, u = (np.asarray(a, dtype=float) for a in (tp, p, th, h, tu, u))
+    ts, ps = moving_average(*select(tp, p, 0.0, t_end), width)
+    k = int(np.argmax(ps))
+    up = lambda t: float(np.interp(t, tu, u))  # noqa: E731
+    above = np.nonzero((h > h[0] + rise) & (th <= t_end))[0]
+    t_on = float(th[above[0]]) if above.size else float("nan")
+    out = {"p_peak": float(ps[k]), "t_peak": float(ts[k]), "u_peak": up(ts[k]),
+           "t_onset": t_on, "u_onset": up(t_on) if above.size else float("nan"),
+           "complete": bool(above.size) and ts[k] < ts[-1] - width, "fixed": []}
+    for uf in u_fixed:
+        if not above.size or uf >= out["u_onset"]:
+            continue
+        # the first time the inlet reaches uf (u rises on the ramp)
+        i = np.nonzero(u >= uf)[0]
+        if not i.size:
+            continue
+        tf = float(tu[i[0]])
+        out["fixed"].append((float(uf), float(np.interp(tf, ts, ps))))
+    return out

@@ -67,4 +67,46 @@ k = int(np.argmax(a[1:])) + 1
 check("spectrum peak of 2 sin(2 pi 25 t): %.4f at %.2f Hz" % (a[k], f[k]),
       abs(f[k] - 25) < 1e-9 and abs(a[k] - 2) < 1e-9, "")
 
+# The start of spouting on a ramp (spouted.ramp_onset): the inlet rises as
+# u = 1.3 t to 1 s, then holds. The fixed bed's pressure is A u + B u^2 up
+# to the spout's break-through at t_b, then 20 Pa; on top, a 40 Hz ripple
+# of 1 Pa (two whole periods in the 0.05 s average, so it averages out);
+# after the ramp a larger pressure that must not count. The highest
+# particle rests at 0.05 m until t_on, then rises at 0.1 m/s.
+A, B, t_b, t_on = 60.0, 40.0, 0.55, 0.45
+dt = 1e-4
+t = np.arange(dt, 1.5 + dt / 2, dt)
+u = np.minimum(1.3 * t, 1.3)
+pf = lambda uu: A * uu + B * uu ** 2  # noqa: E731
+p = np.where(t < t_b, pf(u), 20.0) + np.sin(2 * math.pi * 40.0 * t)
+p[t > 1.0] = 200.0
+th = np.arange(0.0, 1.5 + 1e-6, 0.01)
+h = 0.05 + 0.1 * np.maximum(th - t_on, 0.0)
+r = spouted.ramp_onset(t, p, th, h, t, u, 1.0, width=0.05, rise=0.002,
+                       u_fixed=(0.2, 0.3, 0.8))
+# first 100 Hz sample above 0.052 m: 0.05 + 0.1 (t - 0.45) > 0.052 at t > 0.47
+check("ramp: onset at %.4f s, %.4f m/s (0.48 s, %.4f m/s)" % (r["t_onset"], r["u_onset"], 1.3 * 0.48),
+      abs(r["t_onset"] - 0.48) < 1e-9 and abs(r["u_onset"] - 1.3 * 0.48) < 1e-6, "")
+# the 0.05 s average is largest with its window just before t_b: at
+# t_b - 0.025 s it is A u + B u^2 there (to B (1.3 * 0.025)^2 / 3 and the
+# ripple's sampling), so within 1 % of pf(u(t_b - 0.025)) and within half
+# the width of that time
+want = pf(1.3 * (t_b - 0.025))
+check("ramp: peak %.3f Pa at %.4f s (%.3f Pa at %.4f s), not the 200 Pa after the ramp"
+      % (r["p_peak"], r["t_peak"], want, t_b - 0.025),
+      abs(r["p_peak"] / want - 1) < 0.01 and abs(r["t_peak"] - (t_b - 0.025)) < 0.025, "")
+fixed = dict(r["fixed"])
+check("ramp: fixed-bed pressure at 0.2 and 0.3 m/s only (0.8 is past the onset): %s" % r["fixed"],
+      sorted(fixed) == [0.2, 0.3], "")
+for uf in (0.2, 0.3):
+    check("ramp: p(%.1f) %.4f Pa (%.4f)" % (uf, fixed.get(uf, float("nan")), pf(uf)),
+          abs(fixed.get(uf, 0.0) / pf(uf) - 1) < 5e-3, "")
+check("ramp: complete", r["complete"], "")
+# a run still going: no onset yet (data to 0.4 s), or its peak in the last
+# 0.05 s (data to 0.54 s): not complete
+for cut in (0.4, 0.54):
+    m, mh = t <= cut, th <= cut
+    rc = spouted.ramp_onset(t[m], p[m], th[mh], h[mh], t[m], u[m], 1.0)
+    check("ramp: data to %.2f s not complete" % cut, not rc["complete"], str(rc["complete"]))
+
 finish()

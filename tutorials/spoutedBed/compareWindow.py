@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """compareWindow.py CASE [CASE ...] --window T0 T1 [--fmin F] [--out FILE]
                   [--plot FILE.png] [--labels L1 L2 ...]
+compareWindow.py CASE [CASE ...] --ramp [--u-fixed U ...] [--rise DH]
+                  [--width W] [--out FILE] [--plot FILE.png] [--labels ...]
 
 The plateau statistics of postprocess.py (python/foamdem/spouted.py: the
 gauge pressure's RMS deviation and dominant frequency at the probe, the
@@ -14,10 +16,23 @@ dominantFrequency_Hz maxHeightMean_m maxHeightMax_m samples cells).
 With --plot, a figure of the cases' pressure, highest particle and
 amplitude spectrum over the window (one colour per case, --labels for the
 legend). Exits 1 if a case's data do not cover the window.
+
+--ramp: the start of spouting on the inlet's ramp (to the first plateau's
+start in DEM/post/schedule.dat) instead (spouted.ramp_onset): the inlet velocity when the highest particle first
+stands DH (default 2 mm) above its fill height, the largest W-second
+(default 0.05 s) average of the gauge pressure with its inlet velocity, and
+the fixed bed's pressure at the --u-fixed velocities (default 0.2 0.3
+m/s). One line per case: case u_onset_m_s t_onset_s p_peak_Pa u_peak_m_s
+t_peak_s complete, then p_Pa at each --u-fixed velocity below the onset.
+With --plot, the averaged pressure and the highest particle against the
+inlet velocity. Exits 1 if a case has no onset or its peak may lie ahead
+(complete 0).
 """
 import argparse
 import os
 import sys
+
+import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -41,16 +56,24 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("cases", nargs="+")
-    ap.add_argument("--window", type=float, nargs=2, required=True)
+    ap.add_argument("--window", type=float, nargs=2)
+    ap.add_argument("--ramp", action="store_true")
+    ap.add_argument("--u-fixed", type=float, nargs="+", default=[0.2, 0.3])
+    ap.add_argument("--rise", type=float, default=0.002)
+    ap.add_argument("--width", type=float, default=0.05)
     ap.add_argument("--fmin", type=float, default=0.0)
     ap.add_argument("--out")
     ap.add_argument("--plot")
     ap.add_argument("--labels", nargs="+")
     args = ap.parse_args()
-    t0, t1 = args.window
     if args.labels and len(args.labels) != len(args.cases):
         sys.exit("compareWindow.py: %d labels for %d cases" % (len(args.labels), len(args.cases)))
     labels = dict(zip(args.cases, args.labels or args.cases))
+    if args.ramp:
+        return ramp(args, labels)
+    if not args.window:
+        sys.exit("compareWindow.py: --window T0 T1 or --ramp")
+    t0, t1 = args.window
     lines, status, series = [], 0, []
     for case in args.cases:
         tp, p, hd = pp.load_signals(case)
@@ -101,6 +124,53 @@ def main():
         fig.savefig(args.plot, dpi=80)
         plt.close(fig)
     return status
+
+
+def ramp(args, labels):
+    """The --ramp table and figure (module docstring)."""
+    lines, status, series = [], 0, []
+    for case in args.cases:
+        tp, p, hd = pp.load_signals(case)
+        tu, u = pp.load_inlet_velocity(case)
+        # the ramp ends where the first plateau starts (prepare.py's schedule)
+        t_end = np.loadtxt(os.path.join(case, "DEM/post/schedule.dat"), ndmin=2)[0, 1]
+        r = spouted.ramp_onset(tp, p, hd[:, 0], hd[:, 1], tu, u, t_end, args.width,
+                               args.rise, args.u_fixed)
+        status |= not r["complete"]
+        series.append((case, spouted.moving_average(*spouted.select(tp, p, 0.0, t_end),
+                                                    args.width),
+                       hd[hd[:, 0] <= t_end], tu, u, r))
+        lines.append("%s %.4g %.4g %.4g %.4g %.4g %d %s" % (
+            case, r["u_onset"], r["t_onset"], r["p_peak"], r["u_peak"], r["t_peak"],
+            r["complete"], " ".join("p(%g)=%.4g" % f for f in r["fixed"])))
+    head = ("# spoutedBed, the ramp: case u_onset_m_s t_onset_s p_peak_Pa u_peak_m_s"
+            " t_peak_s complete fixed-bed p_Pa at inlet velocities (rise %g m,"
+            " average over %g s)" % (args.rise, args.width))
+    print(head)
+    print("\n".join(lines))
+    if args.out:
+        with open(args.out, "w") as f:
+            f.write(head + "\n" + "\n".join(lines) + "\n")
+    if args.plot:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+        for case, (ts, ps), hd, tu, u, r in series:
+            lab = labels[case]
+            line, = ax[0].plot(np.interp(ts, tu, u), ps, lw=0.8,
+                               label="%s: peak %.3g Pa at %.3g m/s" % (lab, r["p_peak"], r["u_peak"]))
+            ax[1].plot(np.interp(hd[:, 0], tu, u), hd[:, 1], lw=0.8, color=line.get_color(),
+                       label="%s: onset %.3g m/s" % (lab, r["u_onset"]))
+        ax[0].set_ylabel("gauge pressure, %g s average [Pa]" % args.width)
+        ax[1].set_ylabel("highest particle [m]")
+        ax[1].set_xlabel("inlet velocity [m/s]")
+        for a in ax:
+            a.legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(args.plot, dpi=80)
+        plt.close(fig)
+    return int(status)
 
 
 if __name__ == "__main__":

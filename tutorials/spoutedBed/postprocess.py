@@ -42,12 +42,13 @@ sys.path.insert(0, os.path.join(os.environ.get("FOAMDEM_DIR", "../.."), "python"
 from foamdem import caseio, spouted  # noqa: E402
 
 
-def concat(pattern, usecols=None):
+def concat(pattern, read=lambda path: np.loadtxt(path, comments="#", ndmin=2)):
     """Rows of all time directories' files (continued runs), by time, the
-    later segment winning where they overlap."""
+    later segment winning where they overlap; read(path) gives a file's
+    rows."""
     parts = []
     for path in sorted(glob.glob(pattern), key=lambda p: float(p.split(os.sep)[-2])):
-        d = np.loadtxt(path, comments="#", usecols=usecols, ndmin=2)
+        d = read(path)
         if d.size:
             parts.append(d)
     if not parts:
@@ -89,6 +90,14 @@ def read_vector_column(path):
         nums = re.findall(r"[-+0-9.eE]+", line.replace("(", " ").replace(")", " "))
         rows.append([float(v) for v in nums[:4]])
     return np.array(rows)
+
+
+def load_inlet_velocity(case):
+    """The inlet's area-averaged U (postProcessing/inletVelocity, every CFD
+    step): times and vertical components, continued segments joined."""
+    iv = concat(os.path.join(case, "postProcessing/inletVelocity/*/surfaceFieldValue.dat"),
+                read_vector_column)
+    return iv[:, 0], iv[:, 3]
 
 
 def main():
@@ -188,16 +197,13 @@ def main():
     checks.append(("mass constant (1e-12)", dm < 1e-12))
     if args.ci:
         # schedule applied: the inlet's area-averaged U against the table
-        iv = None
-        for path in sorted(glob.glob("postProcessing/inletVelocity/*/surfaceFieldValue.dat")):
-            d = read_vector_column(path)
-            iv = d if iv is None else np.vstack([iv, d])
+        tu, uz = load_inlet_velocity(case)
         table = re.search(r"inletTable\s*\((.*?)\n\);", setup, flags=re.S).group(1)
         tab = np.array([[float(v) for v in re.findall(r"[-+0-9.eE]+", line)][::3][:1]
                         + [float(re.findall(r"[-+0-9.eE]+", line)[-1])]
                         for line in table.strip().splitlines()])
-        want = np.interp(iv[:, 0], tab[:, 0], tab[:, 1])
-        err = float(np.max(np.abs(iv[:, 3] - want)))
+        want = np.interp(tu, tab[:, 0], tab[:, 1])
+        err = float(np.max(np.abs(uz - want)))
         summary.append(("inletVelocity_maxError_m_s", "%.3e" % err))
         checks.append(("schedule applied (inlet U within 1e-6 m/s of the table)", err < 1e-6))
         # every CFD step: the sample count is the step count, and the

@@ -80,50 +80,61 @@ def plateau_statistics(tp, p, th, h, windows, skip_start, skip_end, fmin=0.0):
 
 
 def moving_average(t, x, width):
-    """x averaged over a centred window of `width` seconds (on the
-    signal's uniform grid of its median spacing)."""
+    """x averaged over centred windows of `width` seconds (on the signal's
+    uniform grid of its median spacing); full windows only, so the result
+    starts and ends half a width inside the signal, and is empty when the
+    signal is shorter than one window."""
     tu, xu, dt = uniform(t, x)
     n = max(1, int(round(width / dt)))
-    kernel = np.ones(n) / n
-    # 'valid' part only, so no average is made of a partial window
-    xs = np.convolve(xu, kernel, mode="valid")
-    ts = tu[(n - 1) // 2:(n - 1) // 2 + xs.size]
-    return ts, xs
+    if xu.size < n:
+        return np.empty(0), np.empty(0)
+    xs = np.convolve(xu, np.ones(n) / n, mode="valid")
+    return tu[0] + dt * ((n - 1) / 2 + np.arange(xs.size)), xs
 
 
 def ramp_onset(tp, p, th, h, tu, u, t_end, width=0.05, rise=0.002, u_fixed=()):
     """The start of spouting on the inlet's ramp (0 to t_end), from the
     signals of one run: the gauge pressure p (times tp), the highest
-    particle h (times th) and the inlet velocity u (times tu).
+    particle h (times th, its first sample the filled bed at rest) and the
+    inlet velocity u (times tu, rising on the ramp).
 
-    - onset: the first time the highest particle stands `rise` [m] above
-      its first value (the bed's top starts to move), with the inlet
-      velocity then;
+    - onset: the first sample at which the highest particle stands more
+      than `rise` [m] above its first sample (the bed's top starts to
+      move), with the inlet velocity then;
     - peak: the largest `width`-second moving average of p on the ramp,
       its time and inlet velocity (the bed's largest pressure drop, as the
       spout breaks through);
-    - fixed: for each velocity in u_fixed below the onset velocity, the
-      `width`-second average of p around the time the inlet reaches it
-      (the fixed bed's pressure, which its packing sets).
+    - fixed: the `width`-second average of p when the inlet reaches each
+      velocity of u_fixed, NaN where that is at or past the onset or
+      outside the averaged signal (the fixed bed's pressure, which its
+      packing sets);
+    - ts, ps: the moving average on the ramp.
 
-    "complete" is False while the peak may still lie ahead: no onset yet,
-    or the moving average's largest value is in its last `width`."""
+    "complete": the onset is found, and the peak can no longer change:
+    the data reach t_end, or the peak's average ends more than `width`
+    before the last one does. NaN throughout where the data are shorter
+    than one average."""
     tp, p, th, h, tu, u = (np.asarray(a, dtype=float) for a in (tp, p, th, h, tu, u))
+    nan = float("nan")
     ts, ps = moving_average(*select(tp, p, 0.0, t_end), width)
+    out = {"p_peak": nan, "t_peak": nan, "u_peak": nan, "t_onset": nan, "u_onset": nan,
+           "complete": False, "fixed": [(float(uf), nan) for uf in u_fixed],
+           "ts": ts, "ps": ps}
+    if not ts.size:
+        return out
     k = int(np.argmax(ps))
-    up = lambda t: float(np.interp(t, tu, u))  # noqa: E731
+    out.update(p_peak=float(ps[k]), t_peak=float(ts[k]), u_peak=float(np.interp(ts[k], tu, u)))
     above = np.nonzero((h > h[0] + rise) & (th <= t_end))[0]
-    t_on = float(th[above[0]]) if above.size else float("nan")
-    out = {"p_peak": float(ps[k]), "t_peak": float(ts[k]), "u_peak": up(ts[k]),
-           "t_onset": t_on, "u_onset": up(t_on) if above.size else float("nan"),
-           "complete": bool(above.size) and ts[k] < ts[-1] - width, "fixed": []}
+    if not above.size:
+        return out
+    t_on = float(th[above[0]])
+    out.update(t_onset=t_on, u_onset=float(np.interp(t_on, tu, u)),
+               complete=bool(tp[-1] >= t_end or ts[k] < ts[-1] - width))
+    fixed = []
     for uf in u_fixed:
-        if not above.size or uf >= out["u_onset"]:
-            continue
-        # the first time the inlet reaches uf (u rises on the ramp)
-        i = np.nonzero(u >= uf)[0]
-        if not i.size:
-            continue
-        tf = float(tu[i[0]])
-        out["fixed"].append((float(uf), float(np.interp(tf, ts, ps))))
+        reached = np.nonzero(u >= uf)[0]
+        tf = float(tu[reached[0]]) if reached.size else nan
+        ok = uf < out["u_onset"] and ts[0] <= tf <= ts[-1]
+        fixed.append((float(uf), float(np.interp(tf, ts, ps)) if ok else nan))
+    out["fixed"] = fixed
     return out

@@ -68,45 +68,63 @@ check("spectrum peak of 2 sin(2 pi 25 t): %.4f at %.2f Hz" % (a[k], f[k]),
       abs(f[k] - 25) < 1e-9 and abs(a[k] - 2) < 1e-9, "")
 
 # The start of spouting on a ramp (spouted.ramp_onset): the inlet rises as
-# u = 1.3 t to 1 s, then holds. The fixed bed's pressure is A u + B u^2 up
-# to the spout's break-through at t_b, then 20 Pa; on top, a 40 Hz ripple
-# of 1 Pa (two whole periods in the 0.05 s average, so it averages out);
-# after the ramp a larger pressure that must not count. The highest
-# particle rests at 0.05 m until t_on, then rises at 0.1 m/s.
-A, B, t_b, t_on = 60.0, 40.0, 0.55, 0.45
+# u = 1.3 t to 1 s, then holds (written at 1 kHz, the pressure at 10 kHz).
+# The fixed bed's pressure is A u + B u^2 up to the spout's break-through
+# at t_b, then 20 Pa; on top, a 40 Hz ripple of 1 Pa (two whole periods in
+# the 0.05 s average, so it averages out); after the ramp a larger pressure
+# that must not count. The highest particle rests at 0.05 m until t_on,
+# then rises at 0.1 m/s.
+A, B, t_b, t_on = 60.0, 40.0, 0.55, 0.455
 dt = 1e-4
 t = np.arange(dt, 1.5 + dt / 2, dt)
-u = np.minimum(1.3 * t, 1.3)
+tu = np.arange(1e-3, 1.5 + 1e-6, 1e-3)
+u = np.minimum(1.3 * tu, 1.3)
 pf = lambda uu: A * uu + B * uu ** 2  # noqa: E731
-p = np.where(t < t_b, pf(u), 20.0) + np.sin(2 * math.pi * 40.0 * t)
+p = np.where(t < t_b, pf(np.minimum(1.3 * t, 1.3)), 20.0) + np.sin(2 * math.pi * 40.0 * t)
 p[t > 1.0] = 200.0
 th = np.arange(0.0, 1.5 + 1e-6, 0.01)
 h = 0.05 + 0.1 * np.maximum(th - t_on, 0.0)
-r = spouted.ramp_onset(t, p, th, h, t, u, 1.0, width=0.05, rise=0.002,
-                       u_fixed=(0.2, 0.3, 0.8))
-# first 100 Hz sample above 0.052 m: 0.05 + 0.1 (t - 0.45) > 0.052 at t > 0.47
+r = spouted.ramp_onset(t, p, th, h, tu, u, 1.0, width=0.05, rise=0.002,
+                       u_fixed=(0.01, 0.2, 0.3, 0.8))
+# first 100 Hz sample above 0.052 m: 0.05 + 0.1 (t - 0.455) > 0.052 at t > 0.475
 check("ramp: onset at %.4f s, %.4f m/s (0.48 s, %.4f m/s)" % (r["t_onset"], r["u_onset"], 1.3 * 0.48),
       abs(r["t_onset"] - 0.48) < 1e-9 and abs(r["u_onset"] - 1.3 * 0.48) < 1e-6, "")
-# the 0.05 s average is largest with its window just before t_b: at
-# t_b - 0.025 s it is A u + B u^2 there (to B (1.3 * 0.025)^2 / 3 and the
-# ripple's sampling), so within 1 % of pf(u(t_b - 0.025)) and within half
-# the width of that time
+# the 0.05 s average is largest with its window just before t_b, centred
+# at t_b - 0.025 s, where it is A u + B u^2 (to B (1.3 * 0.025)^2 / 3 and
+# the ripple's sampling): within 0.1 % and one sample (1e-4 s) of that
 want = pf(1.3 * (t_b - 0.025))
-check("ramp: peak %.3f Pa at %.4f s (%.3f Pa at %.4f s), not the 200 Pa after the ramp"
-      % (r["p_peak"], r["t_peak"], want, t_b - 0.025),
-      abs(r["p_peak"] / want - 1) < 0.01 and abs(r["t_peak"] - (t_b - 0.025)) < 0.025, "")
+check("ramp: peak %.3f Pa at %.5f s, %.4f m/s (%.3f Pa at %.4f s), not the 200 Pa after the ramp"
+      % (r["p_peak"], r["t_peak"], r["u_peak"], want, t_b - 0.025),
+      abs(r["p_peak"] / want - 1) < 1e-3 and abs(r["t_peak"] - (t_b - 0.025)) < 1.5e-4
+      and abs(r["u_peak"] - 1.3 * r["t_peak"]) < 1e-9, "")
 fixed = dict(r["fixed"])
-check("ramp: fixed-bed pressure at 0.2 and 0.3 m/s only (0.8 is past the onset): %s" % r["fixed"],
-      sorted(fixed) == [0.2, 0.3], "")
+check("ramp: fixed-bed pressure at 0.2 and 0.3 m/s only (0.01 m/s is reached in the first"
+      " half-width, 0.8 past the onset): %s" % r["fixed"],
+      [uf for uf, pv in r["fixed"] if not math.isnan(pv)] == [0.2, 0.3], "")
 for uf in (0.2, 0.3):
     check("ramp: p(%.1f) %.4f Pa (%.4f)" % (uf, fixed.get(uf, float("nan")), pf(uf)),
           abs(fixed.get(uf, 0.0) / pf(uf) - 1) < 5e-3, "")
 check("ramp: complete", r["complete"], "")
-# a run still going: no onset yet (data to 0.4 s), or its peak in the last
-# 0.05 s (data to 0.54 s): not complete
-for cut in (0.4, 0.54):
-    m, mh = t <= cut, th <= cut
-    rc = spouted.ramp_onset(t[m], p[m], th[mh], h[mh], t[m], u[m], 1.0)
-    check("ramp: data to %.2f s not complete" % cut, not rc["complete"], str(rc["complete"]))
+# a run still going: no onset yet (data to 0.4 s), or its peak's average
+# (centred at 0.525 s, ending at 0.55 s) not yet more than the 0.05 s width
+# before the last average's end (data to 0.58 s); with data to 0.61 s it is
+for cut, want_complete in ((0.4, False), (0.58, False), (0.61, True)):
+    m, mh, mu = t <= cut, th <= cut, tu <= cut
+    rc = spouted.ramp_onset(t[m], p[m], th[mh], h[mh], tu[mu], u[mu], 1.0)
+    check("ramp: data to %.2f s complete %s" % (cut, want_complete),
+          rc["complete"] == want_complete, str(rc["complete"]))
+# a ramp shorter than one average: no figures, not complete
+m = t <= 0.03
+rc = spouted.ramp_onset(t[m], p[m], th[th <= 0.03], h[th <= 0.03], tu, u, 1.0)
+check("ramp: data shorter than the 0.05 s average give NaN, not complete",
+      math.isnan(rc["p_peak"]) and not rc["complete"], str(rc["p_peak"]))
+# a bed that does not break through on the ramp: the pressure rises to the
+# ramp's end, the top moves; with the data past the ramp the peak is at the
+# ramp's end and final
+p2 = np.where(t <= 1.0, pf(np.minimum(1.3 * t, 1.3)), 20.0)
+r2 = spouted.ramp_onset(t, p2, th, h, tu, u, 1.0)
+check("ramp: no break-through: peak %.3f Pa at %.4f s (the ramp's end), complete"
+      % (r2["p_peak"], r2["t_peak"]),
+      r2["complete"] and abs(r2["t_peak"] - 0.975) < 1.5e-4, "")
 
 finish()

@@ -17,18 +17,21 @@ With --plot, a figure of the cases' pressure, highest particle and
 amplitude spectrum over the window (one colour per case, --labels for the
 legend). Exits 1 if a case's data do not cover the window.
 
---ramp: the start of spouting on the inlet's ramp (to the first plateau's
-start in DEM/post/schedule.dat) instead (spouted.ramp_onset): the inlet velocity when the highest particle first
-stands DH (default 2 mm) above its fill height, the largest W-second
-(default 0.05 s) average of the gauge pressure with its inlet velocity, and
-the fixed bed's pressure at the --u-fixed velocities (default 0.2 0.3
-m/s). One line per case: case u_onset_m_s t_onset_s p_peak_Pa u_peak_m_s
-t_peak_s complete, then p_Pa at each --u-fixed velocity below the onset.
-With --plot, the averaged pressure and the highest particle against the
-inlet velocity. Exits 1 if a case has no onset or its peak may lie ahead
+--ramp: the start of spouting on the inlet's ramp instead (up to the
+first plateau's start in DEM/post/schedule.dat; spouted.ramp_onset): the
+inlet velocity when the highest particle first stands more than DH
+(--rise, default 2 mm) above its first sample (the filled bed), the
+largest W-second (--width, default 0.05 s) average of the gauge pressure
+with its inlet velocity, and the fixed bed's pressure at the --u-fixed
+velocities (default 0.2 0.3 m/s). One line per case: case u_onset_m_s
+t_onset_s p_peak_Pa u_peak_m_s t_peak_s complete, then p_Pa at each
+--u-fixed velocity (nan at or past the onset). With --plot, the averaged
+pressure and the highest particle against the inlet velocity. Exits 1 if
+a case lacks its data, has no onset, or its peak may still change
 (complete 0).
 """
 import argparse
+import glob
 import os
 import sys
 
@@ -56,8 +59,9 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("cases", nargs="+")
-    ap.add_argument("--window", type=float, nargs=2)
-    ap.add_argument("--ramp", action="store_true")
+    mode = ap.add_mutually_exclusive_group(required=True)
+    mode.add_argument("--window", type=float, nargs=2)
+    mode.add_argument("--ramp", action="store_true")
     ap.add_argument("--u-fixed", type=float, nargs="+", default=[0.2, 0.3])
     ap.add_argument("--rise", type=float, default=0.002)
     ap.add_argument("--width", type=float, default=0.05)
@@ -71,8 +75,6 @@ def main():
     labels = dict(zip(args.cases, args.labels or args.cases))
     if args.ramp:
         return ramp(args, labels)
-    if not args.window:
-        sys.exit("compareWindow.py: --window T0 T1 or --ramp")
     t0, t1 = args.window
     lines, status, series = [], 0, []
     for case in args.cases:
@@ -130,22 +132,26 @@ def ramp(args, labels):
     """The --ramp table and figure (module docstring)."""
     lines, status, series = [], 0, []
     for case in args.cases:
+        schedule = os.path.join(case, "DEM/post/schedule.dat")
+        if not (os.path.exists(schedule) and glob.glob(
+                os.path.join(case, "postProcessing/inletVelocity/*/surfaceFieldValue.dat"))):
+            print("%s: no DEM/post/schedule.dat or postProcessing/inletVelocity" % case)
+            status = 1
+            continue
         tp, p, hd = pp.load_signals(case)
         tu, u = pp.load_inlet_velocity(case)
         # the ramp ends where the first plateau starts (prepare.py's schedule)
-        t_end = np.loadtxt(os.path.join(case, "DEM/post/schedule.dat"), ndmin=2)[0, 1]
+        t_end = np.loadtxt(schedule, ndmin=2)[0, 1]
         r = spouted.ramp_onset(tp, p, hd[:, 0], hd[:, 1], tu, u, t_end, args.width,
                                args.rise, args.u_fixed)
         status |= not r["complete"]
-        series.append((case, spouted.moving_average(*spouted.select(tp, p, 0.0, t_end),
-                                                    args.width),
-                       hd[hd[:, 0] <= t_end], tu, u, r))
+        series.append((case, hd[hd[:, 0] <= t_end], tu, u, r))
         lines.append("%s %.4g %.4g %.4g %.4g %.4g %d %s" % (
             case, r["u_onset"], r["t_onset"], r["p_peak"], r["u_peak"], r["t_peak"],
-            r["complete"], " ".join("p(%g)=%.4g" % f for f in r["fixed"])))
-    head = ("# spoutedBed, the ramp: case u_onset_m_s t_onset_s p_peak_Pa u_peak_m_s"
-            " t_peak_s complete fixed-bed p_Pa at inlet velocities (rise %g m,"
-            " average over %g s)" % (args.rise, args.width))
+            r["complete"], " ".join("%.4g" % pf for uf, pf in r["fixed"])))
+    head = ("# spoutedBed, the ramp (rise %g m, averages over %g s): case u_onset_m_s"
+            " t_onset_s p_peak_Pa u_peak_m_s t_peak_s complete %s"
+            % (args.rise, args.width, " ".join("p_%g_Pa" % uf for uf in args.u_fixed)))
     print(head)
     print("\n".join(lines))
     if args.out:
@@ -156,9 +162,9 @@ def ramp(args, labels):
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
-        for case, (ts, ps), hd, tu, u, r in series:
+        for case, hd, tu, u, r in series:
             lab = labels[case]
-            line, = ax[0].plot(np.interp(ts, tu, u), ps, lw=0.8,
+            line, = ax[0].plot(np.interp(r["ts"], tu, u), r["ps"], lw=0.8,
                                label="%s: peak %.3g Pa at %.3g m/s" % (lab, r["p_peak"], r["u_peak"]))
             ax[1].plot(np.interp(hd[:, 0], tu, u), hd[:, 1], lw=0.8, color=line.get_color(),
                        label="%s: onset %.3g m/s" % (lab, r["u_onset"]))

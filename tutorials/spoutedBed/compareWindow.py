@@ -31,7 +31,6 @@ a case lacks its data, has no onset, or its peak may still change
 (complete 0).
 """
 import argparse
-import glob
 import os
 import sys
 
@@ -53,6 +52,15 @@ def cells(case):
         if i >= 0:
             return int(head[i + 7:].split()[0])
     return -1
+
+
+def table(head, lines, out):
+    """Print the table, and write it to out if given."""
+    text = head + "\n" + "\n".join(lines) + "\n"
+    sys.stdout.write(text)
+    if out:
+        with open(out, "w") as f:
+            f.write(text)
 
 
 def main():
@@ -95,11 +103,7 @@ def main():
                                                        r["hmax"], r["n"], cells(case)))
     head = ("# spoutedBed, window %g-%g s: case rms_Pa dominantFrequency_Hz"
             " maxHeightMean_m maxHeightMax_m probeSamples cells" % (t0, t1))
-    print(head)
-    print("\n".join(lines))
-    if args.out:
-        with open(args.out, "w") as f:
-            f.write(head + "\n" + "\n".join(lines) + "\n")
+    table(head, lines, args.out)
     if args.plot and series:
         import matplotlib
         matplotlib.use("Agg")
@@ -133,13 +137,13 @@ def ramp(args, labels):
     lines, status, series = [], 0, []
     for case in args.cases:
         schedule = os.path.join(case, "DEM/post/schedule.dat")
-        if not (os.path.exists(schedule) and glob.glob(
-                os.path.join(case, "postProcessing/inletVelocity/*/surfaceFieldValue.dat"))):
+        inlet = pp.load_inlet_velocity(case)
+        if not os.path.exists(schedule) or inlet is None:
             print("%s: no DEM/post/schedule.dat or postProcessing/inletVelocity" % case)
             status = 1
             continue
+        tu, u = inlet
         tp, p, hd = pp.load_signals(case)
-        tu, u = pp.load_inlet_velocity(case)
         # the ramp ends where the first plateau starts (prepare.py's schedule)
         t_end = np.loadtxt(schedule, ndmin=2)[0, 1]
         r = spouted.ramp_onset(tp, p, hd[:, 0], hd[:, 1], tu, u, t_end, args.width,
@@ -152,11 +156,7 @@ def ramp(args, labels):
     head = ("# spoutedBed, the ramp (rise %g m, averages over %g s): case u_onset_m_s"
             " t_onset_s p_peak_Pa u_peak_m_s t_peak_s complete %s"
             % (args.rise, args.width, " ".join("p_%g_Pa" % uf for uf in args.u_fixed)))
-    print(head)
-    print("\n".join(lines))
-    if args.out:
-        with open(args.out, "w") as f:
-            f.write(head + "\n" + "\n".join(lines) + "\n")
+    table(head, lines, args.out)
     if args.plot:
         import matplotlib
         matplotlib.use("Agg")

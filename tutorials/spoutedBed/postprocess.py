@@ -94,10 +94,11 @@ def read_vector_column(path):
 
 def load_inlet_velocity(case):
     """The inlet's area-averaged U (postProcessing/inletVelocity, every CFD
-    step): times and vertical components, continued segments joined."""
+    step): times and vertical components, continued segments joined; None
+    if there are none."""
     iv = concat(os.path.join(case, "postProcessing/inletVelocity/*/surfaceFieldValue.dat"),
                 read_vector_column)
-    return iv[:, 0], iv[:, 3]
+    return None if iv is None else (iv[:, 0], iv[:, 3])
 
 
 def main():

@@ -118,3 +118,35 @@ add_test(NAME parallel.spoutedBed.clumps.fillContinue
 set_tests_properties(parallel.spoutedBed.clumps.fillContinue PROPERTIES
     LABELS "integration;tutorial;parallel" TIMEOUT 900 PROCESSORS 2
     FIXTURES_REQUIRED spoutedBed_clumps)
+
+# The mesh check's start (Allrun -mapFrom SOURCE TIME): the CI run's 0.2 s
+# state (its DEM restart, its fields mapped by mapFields -consistent, its
+# history to 0.2 s) continued on a mesh with 20 cells across instead of 16
+# (6 560 cells, not 5 248); the tutorial's checks pass over the joined
+# history, the solver continued from DEM/restart/0.2.restart, and 0.01 s
+# later the 100 Hz row (highest particle, count, mass) is within 1e-2 of
+# the source's (measured 2.7e-4, 2026-12-06). Seen failing with mapFields
+# left out (the time directory a copy of 0/): the solver stops with NaN in
+# its first steps
+add_test(NAME spoutedBed.mapFrom
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkTutorialMapFrom
+            spoutedBed ${FOAMDEM_WORK}/spoutedBed ${FOAMDEM_WORK}/spoutedBed_mapFrom 0.2
+            --set ciNWidth=20 --history DEM/post/height.dat:0.21:1e-2
+            -- -ci)
+set_tests_properties(spoutedBed.mapFrom PROPERTIES
+    LABELS "integration;tutorial" TIMEOUT 900
+    FIXTURES_REQUIRED spoutedBed_ci FIXTURES_SETUP spoutedBed_mapFrom)
+
+# A run started by -mapFrom has no fill of its own: ./Allrun -continue
+# takes its write as the fill's end (the run above, its writes after 0.3 s
+# removed, continued to the end; the 100 Hz row at 0.31 s agrees with the
+# straight run's to 1e-9, measured 8.3e-11, 2026-12-06). Seen failing with
+# that rule removed from Allrun: it looks for the fill's restart and stops
+add_test(NAME spoutedBed.mapFrom.continue
+    COMMAND ${CONTINUATION_TUT} ${FOAMDEM_WORK}/spoutedBed_mapFrom
+            ${FOAMDEM_WORK}/spoutedBed_mapFrom_continue 0.3
+            --history DEM/post/height.dat:0.31:1e-9
+            -- -ci)
+set_tests_properties(spoutedBed.mapFrom.continue PROPERTIES
+    LABELS "integration;tutorial" TIMEOUT 900
+    FIXTURES_REQUIRED spoutedBed_mapFrom)

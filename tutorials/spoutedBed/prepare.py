@@ -24,11 +24,23 @@ write
               one, from the fill: time 0); the set, the representation
               and the fraction are the run's own (from
               DEM/post/particles.dat) unless given, and must agree with it
+--map-from SOURCE TIME
+              start from another run's state at its write TIME (SOURCE: a
+              run of this case, serial or decomposed) on this case's own
+              mesh (Allrun -mapFrom: the mesh check): copy SOURCE's DEM
+              restart of TIME, its particle description, its 100 Hz heights,
+              snapshots and function-object output up to TIME, and make the
+              time directory TIME from 0/ for mapFields to fill; the set,
+              representation and fraction are SOURCE's, and the DEM step
+              must be SOURCE's (so the restart's step count is this run's
+              time)
 """
 import argparse
+import glob
 import math
 import os
 import re
+import shutil
 import subprocess
 import sys
 
@@ -81,7 +93,7 @@ def rayleigh_time(r, rho, E, nu):
     return math.pi * r * math.sqrt(rho / G) / (0.1631 * nu + 0.8766)
 
 
-def continued_run(args, path):
+def continued_run(args, path, what="--continue"):
     """A continued run keeps its set, representation and fraction: take
     them from the first run's DEM/post/particles.dat header where the
     command line does not give them, and refuse a command line that
@@ -97,14 +109,92 @@ def continued_run(args, path):
              "fraction": args.fraction}
     for key, v in given.items():
         if v is not None and v != own[key]:
-            sys.exit("prepare.py --continue: the run was set up with %s %s (%s), not %s"
-                     % (key, own[key], path, v))
+            sys.exit("prepare.py %s: the run was set up with %s %s (%s), not %s"
+                     % (what, key, own[key], path, v))
     if bool(m.group(2)) != args.ci:
-        sys.exit("prepare.py --continue: the run was set up %s the CI variant (%s)"
-                 % ("as" if m.group(2) else "without", path))
+        sys.exit("prepare.py %s: the run was set up %s the CI variant (%s)"
+                 % (what, "as" if m.group(2) else "without", path))
     args.fraction = own["fraction"]
     args.set = own["set"]
     args.representation = own["representation"]
+
+
+def map_source(source, time):
+    """Check the run to map from (Allrun -mapFrom) before anything is
+    written: its DEM restart and its fields of TIME, its particle
+    description; and that this case has not run (its own state would mix
+    with the source's). Returns the source's DEM step."""
+    def need(path, what):
+        if not os.path.exists(path):
+            sys.exit("prepare.py --map-from %s %s: %s (%s) not found"
+                     % (source, time, what, path))
+    need(os.path.join(source, "DEM", "restart", "%s.restart" % time), "its DEM restart of that time")
+    if not (os.path.isdir(os.path.join(source, time))
+            or os.path.isdir(os.path.join(source, "processor0", time))):
+        sys.exit("prepare.py --map-from %s %s: no time directory %s in %s or its"
+                 " processor0 (the write times are those with a DEM restart in"
+                 " DEM/restart)" % (source, time, time, source))
+    need(os.path.join(source, "DEM", "post", "particles.dat"), "its particle description")
+    need(os.path.join(source, "DEM", "post", "setup.lig"), "its DEM set-up")
+    ran = [d for d in caseio.time_dirs(".") if float(d) > 0] + \
+        glob.glob("processor*") + glob.glob("DEM/restart/*.restart")
+    if ran or os.path.exists("DEM/post/filled.restart"):
+        sys.exit("prepare.py --map-from: this case has run already (%s); map"
+                 " into a clean case (./Allclean)"
+                 % (" ".join(sorted(ran)[:3]) or "DEM/post/filled.restart"))
+    return float(re.search(r"variable demDt\s+equal\s+([-+0-9.eE]+)",
+                           open(os.path.join(source, "DEM", "post", "setup.lig")).read()).group(1))
+
+
+def copy_until(src, dst, t_end):
+    """Copy a text file of rows that start with their time, without the rows
+    after t_end (comment lines kept)."""
+    tol = 1e-9 * max(1.0, abs(t_end))
+    with open(src) as fin, open(dst, "w") as fout:
+        for line in fin:
+            f = line.split()
+            if f and not line.lstrip().startswith("#"):
+                try:
+                    if float(f[0]) > t_end + tol:
+                        continue
+                except ValueError:
+                    pass
+            fout.write(line)
+
+
+def map_copy(source, time, dt, post):
+    """The source's state and history up to TIME, into this case (see
+    --map-from)."""
+    t = float(time)
+    os.makedirs(os.path.join("DEM", "restart"), exist_ok=True)
+    # the restart and the step it was written at (the solver checks that
+    # the DEM script read it)
+    for ext in (".restart", ".step"):
+        f = os.path.join(source, "DEM", "restart", time + ext)
+        if os.path.exists(f):
+            shutil.copy2(f, os.path.join("DEM", "restart", time + ext))
+    hsrc = os.path.join(source, "DEM", "post", "height.dat")
+    if os.path.exists(hsrc):
+        copy_until(hsrc, os.path.join(post, "height.dat"), t)
+    for path in glob.glob(os.path.join(source, "DEM", "post", "dump", "snap.*.txt")):
+        if int(path.split(".")[-2]) * dt <= t * (1 + 1e-9):
+            shutil.copy2(path, os.path.join(post, "dump"))
+    # function objects' output (probes, inlet velocity): the segments that
+    # start before TIME, cut at TIME; this run's own start at TIME
+    for d in glob.glob(os.path.join(source, "postProcessing", "*", "*")):
+        try:
+            start = float(os.path.basename(d))
+        except ValueError:
+            continue
+        if start >= t or not os.path.isdir(d):
+            continue
+        rel = os.path.relpath(d, source)
+        os.makedirs(rel, exist_ok=True)
+        for f in os.listdir(d):
+            if os.path.isfile(os.path.join(d, f)):
+                copy_until(os.path.join(d, f), os.path.join(rel, f), t)
+    shutil.rmtree(time, ignore_errors=True)
+    shutil.copytree("0", time)
 
 
 def clump_template(row, seed, post):
@@ -214,11 +304,19 @@ def main():
     ap.add_argument("--continue", dest="cont", action="store_true")
     ap.add_argument("--representation", default=None, choices=("spheres", "clumps"))
     ap.add_argument("--fraction", type=float, default=None)
+    ap.add_argument("--map-from", nargs=2, default=None, metavar=("SOURCE", "TIME"))
     args = ap.parse_args()
     case = "."
     P = read_props(case)
+    if args.map_from and args.cont:
+        sys.exit("prepare.py: --map-from starts a new run; it does not go with --continue")
     if args.cont:
         continued_run(args, os.path.join(case, "DEM", "post", "particles.dat"))
+    if args.map_from:
+        source, map_time = args.map_from
+        map_dt = map_source(source, map_time)
+        continued_run(args, os.path.join(source, "DEM", "post", "particles.dat"),
+                      "--map-from %s %s" % (source, map_time))
     if args.fraction is not None and not 0 < args.fraction <= 1:
         sys.exit("prepare.py: --fraction %g: the fraction of each shape's particles"
                  " must be in (0, 1]" % args.fraction)
@@ -358,6 +456,14 @@ def main():
         # (Allrun continues the fill first if it did not end)
         if best is not None:
             start_time, restart, fresh = best, "DEM/restart/%s.restart" % best, 0
+    if args.map_from:
+        if abs(dt / map_dt - 1) > 1e-10:     # setup.lig: 12 digits
+            sys.exit("prepare.py --map-from %s %s: this case's DEM step %.12g s is not"
+                     " the source's %.12g s (its restart counts steps of that"
+                     " size): set this case's writeInterval, rayleighFraction and"
+                     " couplingInterval as the source's" % (source, map_time, dt, map_dt))
+        map_copy(source, map_time, dt, post)
+        start_time, restart, fresh = map_time, "DEM/restart/%s.restart" % map_time, 0
     with open(os.path.join(post, "setup.lig"), "w") as f:
         f.write("# Generated by Allrun (prepare.py) from %s; do not edit\n" % PROPS)
         for k, v in lig.items():

@@ -28,12 +28,16 @@ write
               start from another run's state at its write TIME (SOURCE: a
               run of this case, serial or decomposed) on this case's own
               mesh (Allrun -mapFrom: the mesh check): copy SOURCE's DEM
-              restart of TIME, its particle description, its 100 Hz heights,
+              restart of TIME (and its step), its 100 Hz heights,
               snapshots and function-object output up to TIME, and make the
-              time directory TIME from 0/ for mapFields to fill; the set,
-              representation and fraction are SOURCE's, and the DEM step
-              must be SOURCE's (so the restart's step count is this run's
-              time)
+              time directory TIME from 0/ for mapFields to fill (SOURCE
+              relative to this case). The set, representation and fraction
+              are SOURCE's; the rest of the set-up written here must be
+              SOURCE's but for the mesh (the DEM and CFD steps, particles,
+              materials, domain, probe, schedule: the restart holds SOURCE's
+              bodies and step count, and the history is joined), else it
+              stops and names what differs; the coupling and turbulence
+              settings (constant/) are this case's own
 """
 import argparse
 import glob
@@ -102,6 +106,9 @@ def continued_run(args, path, what="--continue"):
         return
     head = open(path).readline()
     m = re.match(r"# set (\w+)( \(CI\))?, representation (\w+):.*; fraction ([-+0-9.eE]+)", head)
+    if not m and what != "--continue":
+        sys.exit("prepare.py %s: %s does not say the run's set, representation and"
+                 " fraction (a set-up of an older version)" % (what, path))
     if not m:
         return          # a set-up of an older version: the command line's
     own = {"set": m.group(1), "representation": m.group(3), "fraction": float(m.group(4))}
@@ -137,11 +144,13 @@ def map_source(source, time):
     need(os.path.join(source, "DEM", "post", "particles.dat"), "its particle description")
     need(os.path.join(source, "DEM", "post", "setup.lig"), "its DEM set-up")
     ran = [d for d in caseio.time_dirs(".") if float(d) > 0] + \
-        glob.glob("processor*") + glob.glob("DEM/restart/*.restart")
-    if ran or os.path.exists("DEM/post/filled.restart"):
+        glob.glob("processor*") + glob.glob("DEM/restart/*.restart") + \
+        glob.glob("log.pisoDEMFoam*") + \
+        [f for f in ("postProcessing", "DEM/post/height.dat", "DEM/post/filled.restart")
+         if os.path.exists(f)]
+    if ran:
         sys.exit("prepare.py --map-from: this case has run already (%s); map"
-                 " into a clean case (./Allclean)"
-                 % (" ".join(sorted(ran)[:3]) or "DEM/post/filled.restart"))
+                 " into a clean case (./Allclean)" % " ".join(sorted(ran)[:3]))
     return float(re.search(r"variable demDt\s+equal\s+([-+0-9.eE]+)",
                            open(os.path.join(source, "DEM", "post", "setup.lig")).read()).group(1))
 
@@ -160,6 +169,56 @@ def copy_until(src, dst, t_end):
                 except ValueError:
                     pass
             fout.write(line)
+
+
+def setup_entries(path):
+    """The entries of a setupDict (keyword -> text; inletTable whole)."""
+    text = open(path).read()
+    entries = dict(re.findall(r"(?m)^(\w+)\s+([^\n;]*);", text))
+    m = re.search(r"inletTable\s*\((.*?)\n\);", text, flags=re.S)
+    entries["inletTable"] = m.group(1).strip() if m else ""
+    return entries
+
+
+def map_check_setup(source, time, post):
+    """A run started from SOURCE's state must have SOURCE's particles,
+    materials, DEM and CFD steps, domain, probe and schedule: the restart
+    holds SOURCE's bodies and step count, and the history copied from SOURCE
+    is joined to this run's. Only the mesh (and the process count) may
+    differ. Compares the files prepare.py wrote with SOURCE's."""
+    spost = os.path.join(source, "DEM", "post")
+    differ = []
+    free = {"nWidth", "nThickness", "nCone", "nUpper", "coneGrading", "startTime",
+            "endTime", "writeInterval", "decomposition"}
+    a, b = setup_entries(os.path.join(spost, "setupDict")), \
+        setup_entries(os.path.join(post, "setupDict"))
+    for k in sorted(set(a) | set(b)):
+        if k not in free and a.get(k) != b.get(k):
+            differ.append("%s (source %s, here %s)" % (
+                k, (a.get(k) or "none")[:40], (b.get(k) or "none")[:40]))
+    skip = re.compile(r"^variable\s+(fresh|restartFile|nProcX)\s")
+    names = ["setup.lig", "materials.lig", "templates.lig", "particles.dat",
+             "representation", "schedule.dat"] + \
+        sorted(os.path.basename(f) for f in glob.glob(os.path.join(post, "*.multisphere")))
+    pairs = [(os.path.join(spost, n), os.path.join(post, n), "DEM/post/" + n) for n in names]
+    pairs.append((os.path.join(source, "constant", "hoelzerSommerfeldShapes"),
+                  os.path.join("constant", "hoelzerSommerfeldShapes"),
+                  "constant/hoelzerSommerfeldShapes"))
+    for fa, fb, label in pairs:
+        la = [x for x in open(fa)] if os.path.exists(fa) else None
+        lb = [x for x in open(fb)] if os.path.exists(fb) else None
+        if la is None and lb is None:
+            continue
+        if la is None or lb is None or [x for x in la if not skip.match(x)] != \
+                [x for x in lb if not skip.match(x)]:
+            differ.append(label)
+    if differ:
+        sys.exit("prepare.py --map-from %s %s: this case's set-up differs from the"
+                 " source's in: %s. A run started from another run's state takes"
+                 " its particles, materials, steps, domain, probe and schedule:"
+                 " give this case the source's %s apart from the mesh keys"
+                 " (nWidth, nThickness, firstCellHeight, lastConeCell, nUpper)"
+                 % (source, time, "; ".join(differ), PROPS))
 
 
 def map_copy(source, time, dt, post):
@@ -462,7 +521,6 @@ def main():
                      " the source's %.12g s (its restart counts steps of that"
                      " size): set this case's writeInterval, rayleighFraction and"
                      " couplingInterval as the source's" % (source, map_time, dt, map_dt))
-        map_copy(source, map_time, dt, post)
         start_time, restart, fresh = map_time, "DEM/restart/%s.restart" % map_time, 0
     with open(os.path.join(post, "setup.lig"), "w") as f:
         f.write("# Generated by Allrun (prepare.py) from %s; do not edit\n" % PROPS)
@@ -583,6 +641,11 @@ def main():
         f.write("# plateau velocity [m/s], window start [s], window end [s]\n")
         for v, t0, t1 in windows:
             f.write("%.6g %.9g %.9g\n" % (v, t0, t1))
+
+    if args.map_from:
+        # the set-up as the source's but for the mesh, then its state
+        map_check_setup(source, map_time, post)
+        map_copy(source, map_time, dt, post)
 
     print("spoutedBed%s: set %s, representation %s (%d spheres), %d particles (%s), cone %.4g m tall (%d cells,"
           " grading %.3g), upper %.4g m (%d cells), %d x %d cells across; DEM step"

@@ -76,8 +76,12 @@ def load_signals(case):
     the rows of DEM/post/height.dat, continued segments joined."""
     rho = caseio.foam_scalar(os.path.join(case, "constant/transportProperties"), "rho")
     probe = concat(os.path.join(case, "postProcessing/pressureProbe/*/p"))
-    hd = latest_segments(np.loadtxt(os.path.join(case, "DEM/post/height.dat"),
-                                    comments="#", ndmin=2))
+    hfile = os.path.join(case, "DEM/post/height.dat")
+    if probe is None or not os.path.exists(hfile):
+        sys.exit("%s: no %s: the coupled run has not written it (see its"
+                 " log.pisoDEMFoam*)" % (case, "postProcessing/pressureProbe/*/p"
+                                         if probe is None else "DEM/post/height.dat"))
+    hd = latest_segments(np.loadtxt(hfile, comments="#", ndmin=2))
     return probe[:, 0], rho * probe[:, 1], hd
 
 

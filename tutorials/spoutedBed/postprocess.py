@@ -120,6 +120,8 @@ def main():
     set_name = re.search(r"# set (\w+)", head).group(1)
     m = re.search(r"representation (\w+).*; fraction ([-+0-9.eE]+)", head)
     representation, fraction = (m.group(1), float(m.group(2))) if m else ("spheres", None)
+    m = re.search(r"; realisation (\d+)", head)
+    realisation = int(m.group(1)) if m else 0
     parts = np.genfromtxt("DEM/post/particles.dat", comments="#", dtype=None,
                           encoding=None)
     n_inserted = int(sum(int(r[4]) for r in parts))
@@ -144,7 +146,8 @@ def main():
         f.write("# spoutedBed, set %s%s, representation %s%s: per inlet velocity"
                 " plateau, in its window (first %s and last 1/16 dropped)\n"
                 % (set_name, " (CI)" if args.ci else "", representation,
-                   "" if fraction in (None, 1.0) else ", fraction %g of the particles" % fraction,
+                   ("" if fraction in (None, 1.0) else ", fraction %g of the particles" % fraction)
+                   + ("" if realisation == 0 else ", realisation %d" % realisation),
                    "1/8" if args.skip is None else "%g s" % skip))
         f.write("# gauge pressure at the probe (rho p, p = 0 at the outlet, no"
                 " hydrostatic head): RMS deviation (N - 1) and dominant frequency of its"

@@ -20,9 +20,12 @@ write
 --representation spheres|clumps   override the dictionary's representation
 --fraction F  keep this fraction of each shape's particles (default 1,
               ciFraction with --ci)
+--realisation R  override the dictionary's realisation: the seeds of the
+              random insertion (0: those of every earlier run; 1, 2, ...:
+              other insertions of the same bed)
 --continue    start from the latest time with a DEM restart (or, without
-              one, from the fill: time 0); the set, the representation
-              and the fraction are the run's own (from
+              one, from the fill: time 0); the set, the representation,
+              the fraction and the realisation are the run's own (from
               DEM/post/particles.dat) unless given, and must agree with it
 --map-from SOURCE TIME
               start from another run's state at its write TIME (SOURCE: a
@@ -31,8 +34,8 @@ write
               restart of TIME (and its step), its 100 Hz heights,
               snapshots and function-object output up to TIME, and make the
               time directory TIME from 0/ for mapFields to fill (SOURCE
-              relative to this case). The set, representation and fraction
-              are SOURCE's; the rest of the set-up written here must be
+              relative to this case). The set, representation, fraction and
+              realisation are SOURCE's; the rest of the set-up written here must be
               SOURCE's but for the mesh (the DEM and CFD steps, particles,
               materials, domain, probe, schedule: the restart holds SOURCE's
               bodies and step count, and the history is joined), else it
@@ -97,23 +100,46 @@ def rayleigh_time(r, rho, E, nu):
     return math.pi * r * math.sqrt(rho / G) / (0.1631 * nu + 0.8766)
 
 
+def next_prime(n):
+    """The smallest prime >= n (trial division: n is about 1e8)."""
+    n = max(n, 2)
+    while any(n % d == 0 for d in range(2, int(math.isqrt(n)) + 1)):
+        n += 1
+    return n
+
+
+def insertion_seeds(base_dist, base_insert, realisation):
+    """The seeds of the particle distribution and of the insertion (LIGGGHTS:
+    primes > 10000). Realisation 0 keeps the base seeds, those of every run
+    before the key existed; realisation r > 0 takes the next primes above
+    the base seeds + 100003 r: the same bed, inserted at other random
+    positions, in another order (and, clumps, other orientations)."""
+    if realisation == 0:
+        return base_dist, base_insert
+    dist = next_prime(base_dist + 100003 * realisation)
+    return dist, next_prime(max(base_insert + 100003 * realisation, dist + 1))
+
+
 def continued_run(args, path, what="--continue"):
-    """A continued run keeps its set, representation and fraction: take
-    them from the first run's DEM/post/particles.dat header where the
-    command line does not give them, and refuse a command line that
-    differs."""
+    """A continued run keeps its set, representation, fraction and
+    realisation: take them from the first run's DEM/post/particles.dat
+    header where the command line does not give them, and refuse a command
+    line that differs."""
     if not os.path.exists(path):
         return
     head = open(path).readline()
-    m = re.match(r"# set (\w+)( \(CI\))?, representation (\w+):.*; fraction ([-+0-9.eE]+)", head)
+    m = re.match(r"# set (\w+)( \(CI\))?, representation (\w+):.*; fraction ([-+0-9.eE]+)"
+                 r"(; realisation (\d+))?", head)
     if not m and what != "--continue":
         sys.exit("prepare.py %s: %s does not say the run's set, representation and"
                  " fraction (a set-up of an older version)" % (what, path))
     if not m:
         return          # a set-up of an older version: the command line's
-    own = {"set": m.group(1), "representation": m.group(3), "fraction": float(m.group(4))}
+    # (a header without a realisation: a set-up from before the key, i.e. 0)
+    own = {"set": m.group(1), "representation": m.group(3), "fraction": float(m.group(4)),
+           "realisation": int(m.group(6) or 0)}
     given = {"set": args.set, "representation": args.representation,
-             "fraction": args.fraction}
+             "fraction": args.fraction, "realisation": args.realisation}
     for key, v in given.items():
         if v is not None and v != own[key]:
             sys.exit("prepare.py %s: the run was set up with %s %s (%s), not %s"
@@ -124,6 +150,7 @@ def continued_run(args, path, what="--continue"):
     args.fraction = own["fraction"]
     args.set = own["set"]
     args.representation = own["representation"]
+    args.realisation = own["realisation"]
 
 
 def map_source(source, time):
@@ -362,6 +389,7 @@ def main():
     ap.add_argument("--continue", dest="cont", action="store_true")
     ap.add_argument("--representation", default=None, choices=("spheres", "clumps"))
     ap.add_argument("--fraction", type=float, default=None)
+    ap.add_argument("--realisation", type=int, default=None)
     ap.add_argument("--map-from", nargs=2, default=None, metavar=("SOURCE", "TIME"))
     args = ap.parse_args()
     case = "."
@@ -378,6 +406,14 @@ def main():
     if args.fraction is not None and not 0 < args.fraction <= 1:
         sys.exit("prepare.py: --fraction %g: the fraction of each shape's particles"
                  " must be in (0, 1]" % args.fraction)
+
+    realisation = args.realisation if args.realisation is not None else \
+        P.get("realisation", 0.0)
+    if realisation != int(realisation) or realisation < 0:
+        sys.exit("prepare.py: realisation %g (%s, command line or keyword realisation):"
+                 " a whole number >= 0 (0: the insertion of every earlier run; 1, 2, ...:"
+                 " other random insertions of the same bed)" % (realisation, PROPS))
+    realisation = int(realisation)
 
     def p(key):
         return P["ci" + key[0].upper() + key[1:]] if args.ci and \
@@ -548,9 +584,10 @@ def main():
                         % (row["type"], seeds[k], row["type"], row["rho"], row["dv"] / 2))
             dist.append("pts%d %.12g" % (row["type"], row["n"] / N))
         k = len(rows) if clumps else len(present)
+        dist_seed, insert_seed = insertion_seeds(seeds[k], seeds[k + 1], realisation)
         f.write("fix pdd all particledistribution/discrete/numberbased %d %d %s\n"
-                % (seeds[k], len(present), " ".join(dist)))
-        f.write("variable insertSeed equal %d\n" % seeds[k + 1])
+                % (dist_seed, len(present), " ".join(dist)))
+        f.write("variable insertSeed equal %d\n" % insert_seed)
     # Materials: types 1..6 the shapes, the last type the walls; friction
     # 1.0 between particles, 0.9 with the walls; one restitution and one
     # rolling friction for all pairs
@@ -574,16 +611,19 @@ def main():
                 % (nt, matrix(P["rollingFriction"], P["rollingFriction"])))
         f.write("fix m6 all property/global characteristicVelocity scalar %.6g\n"
                 % P["characteristicVelocity"])
+    realisation_tag = "; realisation %d" % realisation if realisation else ""
     with open(os.path.join(post, "particles.dat"), "w") as f:
         if clumps:
             f.write("# set %s%s, representation clumps: multisphere bodies of"
                     " spheresPerParticle spheres of the plate's thickness or the rod's"
                     " diameter; mass = table mass, inertia = ideal shape's x mass ratio;"
-                    " fraction %g\n" % (set_name, " (CI)" if args.ci else "", frac))
+                    " fraction %g%s\n" % (set_name, " (CI)" if args.ci else "", frac,
+                                           realisation_tag))
         else:
             f.write("# set %s%s, representation spheres: one sphere per particle, d ="
                     " d_v of the ideal shape, density = table mass / ideal volume;"
-                    " fraction %g\n" % (set_name, " (CI)" if args.ci else "", frac))
+                    " fraction %g%s\n" % (set_name, " (CI)" if args.ci else "", frac,
+                                           realisation_tag))
         f.write("# type name kind grams count mass_kg idealVolume_m3 d_v_m density_kg_m3"
                 " massOverIdealMass spheresPerParticle\n")
         for row in rows:

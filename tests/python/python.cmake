@@ -48,6 +48,17 @@ add_test(NAME python.continuationSegments
     COMMAND sh -c "\"\${FOAMDEM_PYTHON:-python3}\" ${CMAKE_CURRENT_LIST_DIR}/testContinuationSegments.py")
 set_tests_properties(python.continuationSegments PROPERTIES LABELS "unit;python" TIMEOUT 60)
 
+# The spoutedBed set-up's realisation (prepare.py alone, in a temporary
+# copy of the tutorial): realisation 0 keeps the insertion seed of every
+# earlier run, realisation 2 changes that seed alone (a prime), --continue
+# keeps the run's realisation and refuses another, and a realisation that
+# is not a whole number from 0 to 10000 is refused. Seen failing with
+# --continue not taking the run's realisation (it wrote realisation 0's
+# seed)
+add_test(NAME python.realisationSetup
+    COMMAND sh -c "\"\${FOAMDEM_PYTHON:-python3}\" ${CMAKE_CURRENT_LIST_DIR}/testRealisationSetup.py")
+set_tests_properties(python.realisationSetup PROPERTIES LABELS "unit;python" TIMEOUT 60)
+
 # bin/foamDEMArchiveRun on a synthetic decomposed case: the archive holds
 # time 0 and the latest write of every processor, the solver's DEM restart
 # and step file of that time only, the first and newest dump, the two

@@ -52,16 +52,15 @@ set_tests_properties(spoutedBed.continue PROPERTIES
     LABELS "integration;tutorial" TIMEOUT 900
     FIXTURES_REQUIRED spoutedBed_ci)
 
-# Another realisation of the bed (./Allrun -ci -realisation 1: other seeds
-# for the distribution and the insertion) against the CI run, realisation
-# 0: the tutorial's checks pass; the same bed (1 713 particles, each
-# shape's count within 2 of the set's: measured 1, the mass 4.2e-4 from
-# the set's in both realisations: LIGGGHTS draws the last few types at
-# random) inserted otherwise (the fill's highest centre 7.2 %, its kinetic
-# energy 57 %, the first 100 Hz row's highest particle 8.0 % from
-# realisation 0's, 2026-12-06). Seen failing with the seeds of realisation
-# 0 kept for every realisation: the seeds are not new and the bed is
-# realisation 0's to the last digit
+# Another realisation of the bed (./Allrun -ci -realisation 1: another
+# seed for the insertion) against the CI run, realisation 0: the
+# tutorial's checks pass; the same bed (1 713 particles, each shape's
+# count and the mass realisation 0's) inserted otherwise (the fill's
+# highest centre 26 %, its kinetic energy 67 %, the first 100 Hz row's
+# highest particle 27 % from realisation 0's, 2026-12-06). Seen failing
+# with realisation 0's seed kept for every realisation (the bed is then
+# realisation 0's to the last digit) and with the distribution's seed
+# changed too (the mass 8.5e-4 from realisation 0's, the counts differ)
 add_test(NAME spoutedBed.realisation
     COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkRealisation
             ${FOAMDEM_WORK}/spoutedBed ${FOAMDEM_WORK}/spoutedBed_realisation 1

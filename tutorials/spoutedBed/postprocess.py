@@ -163,6 +163,7 @@ def main():
 
     summary = [("set", set_name), ("representation", representation),
                ("fraction", "%g" % (1.0 if fraction is None else fraction)),
+               ("realisation", "%d" % realisation),
                ("particlesInserted", "%d" % n_inserted),
                ("cfdStep_s", "%.6g" % dt_cfd),
                ("probeSamples", "%d" % tp.size)]

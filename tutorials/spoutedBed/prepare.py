@@ -20,9 +20,9 @@ write
 --representation spheres|clumps   override the dictionary's representation
 --fraction F  keep this fraction of each shape's particles (default 1,
               ciFraction with --ci)
---realisation R  override the dictionary's realisation: the seeds of the
-              random insertion (0: those of every earlier run; 1, 2, ...:
-              other insertions of the same bed)
+--realisation R  override the dictionary's realisation: the seed of the
+              random insertion (0: that of every earlier run; 1, 2, ...,
+              10000: other insertions of the same bed)
 --continue    start from the latest time with a DEM restart (or, without
               one, from the fill: time 0); the set, the representation,
               the fraction and the realisation are the run's own (from
@@ -108,16 +108,21 @@ def next_prime(n):
     return n
 
 
-def insertion_seeds(base_dist, base_insert, realisation):
-    """The seeds of the particle distribution and of the insertion (LIGGGHTS:
-    primes > 10000). Realisation 0 keeps the base seeds, those of every run
-    before the key existed; realisation r > 0 takes the next primes above
-    the base seeds + 100003 r: the same bed, inserted at other random
-    positions, in another order (and, clumps, other orientations)."""
+def insertion_seed(base, realisation, taken):
+    """The insertion's seed (LIGGGHTS fix insert/pack: a prime > 10000).
+    Realisation 0 keeps the base seed, that of every run before the key
+    existed; realisation r > 0 takes the smallest prime >= base + 100003 r
+    that no other fix uses (taken): the same bed, inserted at other random
+    positions (and, clumps, at other orientations). The distribution's
+    seed is not changed: it hands out the particles left over when each
+    shape's count is rounded down, so the bed's make-up stays realisation
+    0's exactly."""
     if realisation == 0:
-        return base_dist, base_insert
-    dist = next_prime(base_dist + 100003 * realisation)
-    return dist, next_prime(max(base_insert + 100003 * realisation, dist + 1))
+        return base
+    seed = next_prime(base + 100003 * realisation)
+    while seed in taken:
+        seed = next_prime(seed + 1)
+    return seed
 
 
 def continued_run(args, path, what="--continue"):
@@ -409,10 +414,11 @@ def main():
 
     realisation = args.realisation if args.realisation is not None else \
         P.get("realisation", 0.0)
-    if realisation != int(realisation) or realisation < 0:
+    if realisation != int(realisation) or not 0 <= realisation <= 10000:
         sys.exit("prepare.py: realisation %g (%s, command line or keyword realisation):"
-                 " a whole number >= 0 (0: the insertion of every earlier run; 1, 2, ...:"
-                 " other random insertions of the same bed)" % (realisation, PROPS))
+                 " a whole number from 0 to 10000 (0: the insertion of every earlier run;"
+                 " 1, 2, ...: other random insertions of the same bed)"
+                 % (realisation, PROPS))
     realisation = int(realisation)
 
     def p(key):
@@ -584,10 +590,10 @@ def main():
                         % (row["type"], seeds[k], row["type"], row["rho"], row["dv"] / 2))
             dist.append("pts%d %.12g" % (row["type"], row["n"] / N))
         k = len(rows) if clumps else len(present)
-        dist_seed, insert_seed = insertion_seeds(seeds[k], seeds[k + 1], realisation)
         f.write("fix pdd all particledistribution/discrete/numberbased %d %d %s\n"
-                % (dist_seed, len(present), " ".join(dist)))
-        f.write("variable insertSeed equal %d\n" % insert_seed)
+                % (seeds[k], len(present), " ".join(dist)))
+        f.write("variable insertSeed equal %d\n"
+                % insertion_seed(seeds[k + 1], realisation, seeds))
     # Materials: types 1..6 the shapes, the last type the walls; friction
     # 1.0 between particles, 0.9 with the walls; one restitution and one
     # rolling friction for all pairs

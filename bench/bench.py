@@ -524,7 +524,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--size", type=int, help="particles of the bed (default 25000, --quick 5000)")
-    ap.add_argument("--steps", type=int, help="DEM steps (default 2000, --quick 1000)")
+    ap.add_argument("--steps", type=int, help="DEM steps (default 4000, --quick 1000)")
     ap.add_argument("--quick", action="store_true", help="small size, few steps (< 5 min)")
     ap.add_argument("--dpm-time", type=float, help="simulated time of the Goldschmidt runs [s]")
     ap.add_argument("--repeat", type=int, help="runs of the timed np 1 / standalone / np 2 cases, best kept (default 2, --quick 1)")

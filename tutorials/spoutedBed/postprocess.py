@@ -14,7 +14,8 @@ DEM/post/dump/snap.*.txt.
 
 Writes results/<set>/plateaus.dat (inletVelocity rms_Pa
 dominantFrequency_Hz maxHeightMean_m maxHeightMax_m), results/summary.dat,
-results/<set>/{pressure,height,spectra}.png and snapshot_<U>.png.
+results/<set>/timeSeries.png (pressure and height), spectra.png and
+snapshot_<U>.png.
 
 Each plateau's window drops its first 1/8 and last 1/16 (0.5 s and 0.25 s
 of the reference's 4 s plateaus); the first plateau counts from the end of

@@ -1,5 +1,6 @@
 """Single-particle drag laws, written independently of the C++ kernels so
-that the validation cases check the C++ against a second implementation.
+that the tutorials' checks verify the C++ against a second implementation
+(verification, not validation: both follow the same published formula).
 Each returns K = |F|/|w| [kg/s] for one particle, model A convention."""
 import math
 

@@ -1,7 +1,8 @@
 """Shape descriptors and the Hoelzer-Sommerfeld (2008) drag of spherocylinders
 and plates, written in Python independently of the C++ kernels
-(src/foamDEM/correlations/shapeDescriptors.H) so that validation cases check
-the C++ against a second implementation.
+(src/foamDEM/correlations/shapeDescriptors.H) so that the tutorials' checks
+verify the C++ against a second implementation (verification, not
+validation: both follow the same published formula).
 
 Body frame: x along the length (spherocylinder axis, plate length a), y along
 the plate width b, z along the plate thickness c. Definitions as in

@@ -8,7 +8,7 @@
 add_test(NAME liquidFluidizedBed.ci
     COMMAND ${TUT} liquidFluidizedBed ${FOAMDEM_WORK}/liquidFluidizedBed -ci)
 set_tests_properties(liquidFluidizedBed.ci PROPERTIES
-    LABELS "integration;tutorial" TIMEOUT 900
+    LABELS "integration;tutorial;validation" TIMEOUT 900
     FIXTURES_SETUP liquidFluidizedBed_ci)
 
 # Continuation (issue 15 part 2): a copy of the CI run (liquidFluidizedBed.ci)

@@ -224,7 +224,9 @@ set_tests_properties(continuation.periodicWrap PROPERTIES
     LABELS "integration;tutorial" TIMEOUT 300)
 
 # Undisturbed fluid velocity (issue 12 item 4; ./Allrun -meshConvergence
-# -ci, meshConvergence.py), each within 1 % of the ODE's terminal velocity:
+# -ci, meshConvergence.py), each within 1 % of the ODE's terminal velocity
+# with the same drag law (verification of the coupling: the reference is
+# our own second implementation of the law, python/foamdem/drag.py):
 #  1. d/h = 0.5 (20 x 20 x 80 mm box, 0.25 s), the tutorial's centre void
 #     fraction and cell kernel with undisturbedVelocity
 #     selfInducedCorrection (measured -0.63 %; without it +3.13 %);
@@ -237,7 +239,7 @@ add_test(NAME settlingSphere.undisturbedVelocity
     COMMAND ${TUT} settlingSphere ${FOAMDEM_WORK}/settlingSphere_undisturbed
             -meshConvergence -ci)
 set_tests_properties(settlingSphere.undisturbedVelocity PROPERTIES
-    LABELS "integration;tutorial;validation" TIMEOUT 600)
+    LABELS "integration;tutorial;verification" TIMEOUT 600)
 
 # Newton's third law with the undisturbed-velocity treatment (bookkeeping,
 # as momentumBalance.* above): d/h = 0.5 with the correction and the cell

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""fluidizedBed validation.
+"""fluidizedBed checks (verification: a force balance, and Ergun's equation,
+which the Gidaspow law contains; Wen-Yu is reported, not asserted).
 
 1. Plateau: the bed pressure drop dP = rho (p_inlet - p_outlet) (kinematic
    pressure, gas hydrostatics excluded; slip walls for the gas, so the empty

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""settlingNonSpherical validation.
+"""settlingNonSpherical verification (the reference is a second
+implementation of the same Hoelzer-Sommerfeld law, python/foamdem/shapes.py).
 
 Frozen orientation (broadside, edgewise): the DEM settling velocity at the
 end of the run against the Hoelzer-Sommerfeld (2008) terminal velocity with

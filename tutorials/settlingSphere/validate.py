@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""settlingSphere validation: the DEM velocity history of the coupled run
+"""settlingSphere verification: the DEM velocity history of the coupled run
 against the ODE  m dv/dt = (rho_p - rho) V g - K(v) v  with the same drag
 law and the void fraction the particle saw. Writes results/summary.dat and
 results/settling.png; exits 1 if the terminal-velocity error exceeds --tol.

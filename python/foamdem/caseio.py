@@ -128,8 +128,20 @@ def later_segment_wins(rows, key):
 
 def function_object_segments(case, name, fname):
     """Paths of postProcessing/<name>/<start time>/<fname>, a run's and its
-    continuations' (each starts a directory named by its start time), by
-    start time."""
+    continuations' (each starts a directory named by its start time), in
+    the order they were written: by start time, and within one start time
+    <stem>.dat before <stem>_<start>.dat. OpenFOAM's writeFile names a
+    table <stem>_<start>.dat when <stem>.dat is already there, i.e. when a
+    segment is run again from the same start time (a session killed
+    before the next write), and overwrites that second name on any later
+    attempt, so the suffixed file is always the latest attempt's."""
     import glob
-    paths = glob.glob(os.path.join(case, "postProcessing", name, "*", fname))
-    return sorted(paths, key=lambda p: float(os.path.basename(os.path.dirname(p))))
+    top = os.path.join(case, "postProcessing", name)
+    paths = [(p, 0) for p in glob.glob(os.path.join(top, "*", fname))]
+    if fname.endswith(".dat"):
+        for d in glob.glob(os.path.join(top, "*")):
+            again = os.path.join(d, "%s_%s.dat" % (fname[:-4], os.path.basename(d)))
+            if os.path.isfile(again):
+                paths.append((again, 1))
+    paths.sort(key=lambda pa: (float(os.path.basename(os.path.dirname(pa[0]))), pa[1]))
+    return [p for p, _ in paths]

@@ -160,18 +160,16 @@ def periodic_crossings(dump_files):
 def read_controller(case):
     """flowController logs of all run segments, concatenated by time:
     columns time, Umean, Ubar, force[m/s^2], force[N/m^3], r, updated."""
+    from foamdem import caseio
+    paths = glob.glob(os.path.join(case, "postProcessing", "*", "*", "flowController.dat"))
     rows = []
-    for f in glob.glob(os.path.join(case, "postProcessing", "*", "*", "flowController.dat")):
-        d = np.loadtxt(f, ndmin=2)
-        if d.size:
-            rows.append(d)
+    # segments in the order they ran (by start time); a continuation's rows
+    # replace the earlier segment's from its first time on
+    for f in sorted(paths, key=lambda p: float(os.path.basename(os.path.dirname(p)))):
+        rows.extend(np.loadtxt(f, ndmin=2))
     if not rows:
         raise ValueError("%s: no flowController.dat" % case)
-    d = np.vstack(rows)
-    d = d[np.argsort(d[:, 0], kind="stable")]
-    # Keep the last entry of each time (a continuation overrides)
-    _, idx = np.unique(d[::-1, 0], return_index=True)
-    return d[::-1][idx]
+    return np.array(caseio.later_segment_wins(rows, lambda r: r[0]))
 
 
 # ---------------------------------------------------------------------------

@@ -24,9 +24,11 @@ def rms_deviation(x):
 
 
 def uniform(t, x):
-    """The signal on a uniform grid of its median spacing (linear
-    interpolation; the probe writes every CFD step, so with a fixed step
-    this returns the samples themselves)."""
+    """The signal on a uniform grid of its median spacing, linearly
+    interpolated. The probe writes every CFD step, but its times are
+    printed to a few digits, so even with a fixed step the median spacing
+    differs from the step in the last digits and the grid's points fall
+    between the samples (close to them: the values change little)."""
     t = np.asarray(t, dtype=float)
     x = np.asarray(x, dtype=float)
     dt = float(np.median(np.diff(t)))
@@ -38,12 +40,16 @@ def uniform(t, x):
 def amplitude_spectrum(t, x):
     """One-sided amplitude spectrum of x - mean: frequencies [Hz] and
     amplitudes (a sine of amplitude a gives a peak of a at its frequency
-    when the window holds a whole number of periods)."""
+    when the window holds a whole number of periods; the DC bin and, for
+    an even sample count, the Nyquist bin are not doubled)."""
     tu, xu, dt = uniform(t, x)
     xu = xu - xu.mean()
     X = np.fft.rfft(xu)
     f = np.fft.rfftfreq(xu.size, dt)
     a = 2.0 * np.abs(X) / xu.size
+    a[0] /= 2.0
+    if xu.size % 2 == 0:
+        a[-1] /= 2.0
     return f, a
 
 

@@ -46,4 +46,49 @@ with tempfile.TemporaryDirectory() as case:
           list(s["areaAverage(p)"]) == [0.1, 0.2, 0.3, 0.8, 1.0, 1.2]
           and list(s["areaAverage(U)"][:, 2]) == [1, 1, 1, 2, 2, 2], str(s["areaAverage(p)"]))
 
+# A segment run twice from the same start time (killed before its next
+# write, then continued again): OpenFOAM's writeFile finds
+# surfaceFieldValue.dat there and writes surfaceFieldValue_0.3.dat; that
+# second attempt's rows win. The first attempt went to 0.6 with tag 2, the
+# second to 0.5 with tag 3.
+with tempfile.TemporaryDirectory() as case:
+    for start, fname, tag, times in (("0", "surfaceFieldValue.dat", 1.0, [0.1, 0.2, 0.3]),
+                                     ("0.3", "surfaceFieldValue.dat", 2.0, [0.4, 0.5, 0.6]),
+                                     ("0.3", "surfaceFieldValue_0.3.dat", 3.0, [0.4, 0.5])):
+        d = os.path.join(case, "postProcessing", "inlet", start)
+        os.makedirs(d, exist_ok=True)
+        with open(os.path.join(d, fname), "w") as f:
+            f.write("# Region type : patch inlet\n# Time\tareaAverage(p)\tareaAverage(U)\n")
+            for t in times:
+                f.write("%g\t%g\t(0 0 %g)\n" % (t, tag * t, tag))
+    segs = [os.path.relpath(q, case) for q in
+            caseio.function_object_segments(case, "inlet", "surfaceFieldValue.dat")]
+    check("function object run twice from 0.3: the _0.3 file last",
+          segs == ["postProcessing/inlet/0/surfaceFieldValue.dat",
+                   "postProcessing/inlet/0.3/surfaceFieldValue.dat",
+                   "postProcessing/inlet/0.3/surfaceFieldValue_0.3.dat"], str(segs))
+    s = fluidbed.read_function_object_segments(case, "inlet", "surfaceFieldValue.dat")
+    check("function object run twice from 0.3: the second attempt's rows",
+          list(s["Time"]) == [0.1, 0.2, 0.3, 0.4, 0.5]
+          and list(s["areaAverage(U)"][:, 2]) == [1, 1, 1, 3, 3], str(list(s["Time"])))
+
+# The flow controller's log (slug.read_controller): postProcessing/<fo>/
+# <start>/flowController.dat of a run to 0.5 and its continuation from
+# 0.3 (another time step, so other times): the continuation's rows from
+# 0.3 on, none of the first run's after 0.3 in between, whatever order the
+# directories are listed in
+from foamdem import slug  # noqa: E402
+with tempfile.TemporaryDirectory() as case:
+    for start, tag, times in (("0.3", 2.0, [0.3, 0.45, 0.6]),
+                              ("0", 1.0, [0.1, 0.2, 0.3, 0.4, 0.5])):
+        d = os.path.join(case, "postProcessing", "flowController", start)
+        os.makedirs(d)
+        with open(os.path.join(d, "flowController.dat"), "w") as f:
+            for t in times:
+                f.write("%g %g 0 0 0 0 1\n" % (t, tag))
+    c = slug.read_controller(case)
+    check("flow controller log: the continuation's rows from 0.3 on",
+          list(c[:, 0]) == [0.1, 0.2, 0.3, 0.45, 0.6]
+          and list(c[:, 1]) == [1, 1, 2, 2, 2], str(c[:, :2].tolist()))
+
 finish()

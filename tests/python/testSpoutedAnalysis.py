@@ -18,7 +18,8 @@ from checks import check, finish  # noqa: E402
 # Two plateaus; in each, the pressure is mean + a1 sin(2 pi f1 t) + a2
 # sin(2 pi f2 t) sampled at 10 kHz, with a1 > a2, so the dominant frequency
 # is f1 and the RMS deviation is sqrt((a1^2 + a2^2)/2) (exact for whole
-# periods; the window here holds whole periods of both)
+# periods only; the analysed 3.25 s windows hold 9.75 and 22.75 periods
+# (first plateau), 4.875 and 37.375 (second), so the checks allow for it)
 dt = 1e-4
 t = np.arange(0.0, 8.0 + dt / 2, dt)
 windows = [(1.3, 0.0, 4.0), (1.9, 4.0, 8.0)]
@@ -66,6 +67,22 @@ f, a = spouted.amplitude_spectrum(tt, 5 + 2 * np.sin(2 * math.pi * 25 * tt))
 k = int(np.argmax(a[1:])) + 1
 check("spectrum peak of 2 sin(2 pi 25 t): %.4f at %.2f Hz" % (a[k], f[k]),
       abs(f[k] - 25) < 1e-9 and abs(a[k] - 2) < 1e-9, "")
+# a constant offset and a Nyquist-frequency term (+-1 alternating, even
+# count): after the mean is removed DC is 0; the alternating term of
+# amplitude 1 shows as 1 in the Nyquist bin (not doubled)
+alt = 5 + np.where(np.arange(tt.size) % 2 == 0, 1.0, -1.0)
+f, a = spouted.amplitude_spectrum(tt, alt)
+check("spectrum of 5 + (-1)^n: DC %.2e, Nyquist bin %.4f at %.0f Hz (1 at 500 Hz)"
+      % (a[0], a[-1], f[-1]), a[0] < 1e-9 and abs(a[-1] - 1) < 1e-9 and abs(f[-1] - 500) < 1e-9, "")
+# the second frequency of each plateau: the spectrum's second-highest
+# local maximum, within half a bin of f2
+for row, (mean, f1, a1, f2, a2) in zip(rows, spec):
+    fa, aa = row["f"], row["a"]
+    peaks = [i for i in range(1, aa.size - 1) if aa[i] > aa[i - 1] and aa[i] >= aa[i + 1]]
+    second = sorted(peaks, key=lambda i: -aa[i])[1]
+    df = fa[1] - fa[0]
+    check("plateau %.1f: second peak %.3f Hz (%.1f Hz)" % (row["u"], fa[second], f2),
+          abs(fa[second] - f2) <= df / 2 + 1e-9, "")
 
 # The start of spouting on a ramp (spouted.ramp_onset): the inlet rises as
 # u = 1.3 t to 1 s, then holds (written at 1 kHz, the pressure at 10 kHz).

@@ -6,7 +6,9 @@ compareWindow.py CASE [CASE ...] --ramp [--u-fixed U ...] [--rise DH]
 
 The plateau statistics of postprocess.py (python/foamdem/spouted.py: the
 gauge pressure's RMS deviation and dominant frequency at the probe, the
-highest particle centre's mean and maximum) over one common window
+highest sphere centre's mean and maximum: the body's centre in the
+production representation, the highest of a body's spheres, up to half a
+body length (2.6 mm) above its centre, with clumps) over one common window
 T0..T1 for several runs of the case, each as it stands on disk (continued
 segments joined as postprocess.py joins them). For the mesh check
 (README): runs that differ in one setting, or a run started from another
@@ -89,9 +91,11 @@ def main():
         tp, p, hd = pp.load_signals(case)
         rows = spouted.plateau_statistics(tp, p, hd[:, 0], hd[:, 1], [(0.0, t0, t1)],
                                           0.0, 0.0, args.fmin)
-        if not rows or not rows[0]["complete"] or tp[0] > t0:
-            print("%s: the data (%.4g-%.4g s) do not cover %g-%g s"
-                  % (case, tp[0], tp[-1], t0, t1))
+        hstep = float(np.median(np.diff(hd[:, 0]))) if len(hd) > 1 else 0.0
+        if (not rows or not rows[0]["complete"] or tp[0] > t0
+                or hd[0, 0] > t0 or hd[-1, 0] < t1 - 1.5 * hstep):
+            print("%s: the data (pressure %.4g-%.4g s, height %.4g-%.4g s) do not cover"
+                  " %g-%g s" % (case, tp[0], tp[-1], hd[0, 0], hd[-1, 0], t0, t1))
             status = 1
             continue
         r = rows[0]

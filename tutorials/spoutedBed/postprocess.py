@@ -5,7 +5,8 @@ height (python/foamdem/spouted.py), as the reference reported them; plots
 and particle snapshots; checks.
 
 Reads postProcessing/pressureProbe/*/p (every CFD step),
-postProcessing/inletVelocity/*/surfaceFieldValue.dat, DEM/post/height.dat
+postProcessing/inletVelocity/*/surfaceFieldValue.dat (or the _<start>.dat
+of a segment run twice from one start), DEM/post/height.dat
 (100 Hz: time, highest sphere centre, sphere count, total mass; with
 clumps the highest of the clumps' spheres, up to half a body length above
 its body's centre),
@@ -43,12 +44,13 @@ sys.path.insert(0, os.path.join(os.environ.get("FOAMDEM_DIR", "../.."), "python"
 from foamdem import caseio, spouted  # noqa: E402
 
 
-def concat(pattern, read=lambda path: np.loadtxt(path, comments="#", ndmin=2)):
-    """Rows of all time directories' files (continued runs), by time, the
-    later segment winning where they overlap; read(path) gives a file's
-    rows."""
+def concat(case, name, fname, read=lambda path: np.loadtxt(path, comments="#", ndmin=2)):
+    """Rows of postProcessing/<name>/*/<fname> of a run and its
+    continuations (caseio.function_object_segments: each segment's file,
+    in the order they were written), by time, the later segment winning
+    where they overlap; read(path) gives a file's rows."""
     parts = []
-    for path in sorted(glob.glob(pattern), key=lambda p: float(p.split(os.sep)[-2])):
+    for path in caseio.function_object_segments(case, name, fname):
         d = read(path)
         if d.size:
             parts.append(d)
@@ -76,7 +78,7 @@ def load_signals(case):
     """The probe's times and gauge pressure [Pa] (rho p, every CFD step) and
     the rows of DEM/post/height.dat, continued segments joined."""
     rho = caseio.foam_scalar(os.path.join(case, "constant/transportProperties"), "rho")
-    probe = concat(os.path.join(case, "postProcessing/pressureProbe/*/p"))
+    probe = concat(case, "pressureProbe", "p")
     hfile = os.path.join(case, "DEM/post/height.dat")
     if probe is None or not os.path.exists(hfile):
         sys.exit("%s: no %s: the coupled run has not written it (see its"
@@ -101,8 +103,7 @@ def load_inlet_velocity(case):
     """The inlet's area-averaged U (postProcessing/inletVelocity, every CFD
     step): times and vertical components, continued segments joined; None
     if there are none."""
-    iv = concat(os.path.join(case, "postProcessing/inletVelocity/*/surfaceFieldValue.dat"),
-                read_vector_column)
+    iv = concat(case, "inletVelocity", "surfaceFieldValue.dat", read_vector_column)
     return None if iv is None else (iv[:, 0], iv[:, 3])
 
 

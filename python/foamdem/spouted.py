@@ -116,10 +116,13 @@ def ramp_onset(tp, p, th, h, tu, u, t_end, width=0.05, rise=0.002, u_fixed=()):
       packing sets);
     - ts, ps: the moving average on the ramp.
 
-    "complete": the onset is found, and the peak can no longer change:
-    the data reach t_end, or the peak's average ends more than `width`
-    before the last one does. NaN throughout where the data are shorter
-    than one average."""
+    "complete": the onset is found, and either the data reach t_end (the
+    peak is final) or the peak's average ends more than `width` before
+    the last one does (the pressure has fallen from it: the spout broke
+    through). The second is a judgement, not a proof: a later, higher
+    average before t_end is still possible, and the figures of a run that
+    has not reached t_end are provisional. NaN throughout where the data
+    are shorter than one average."""
     tp, p, th, h, tu, u = (np.asarray(a, dtype=float) for a in (tp, p, th, h, tu, u))
     nan = float("nan")
     ts, ps = moving_average(*select(tp, p, 0.0, t_end), width)

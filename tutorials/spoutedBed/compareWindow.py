@@ -29,8 +29,9 @@ velocities (default 0.2 0.3 m/s). One line per case: case u_onset_m_s
 t_onset_s p_peak_Pa u_peak_m_s t_peak_s complete, then p_Pa at each
 --u-fixed velocity (nan at or past the onset). With --plot, the averaged
 pressure and the highest particle against the inlet velocity. Exits 1 if
-a case lacks its data, has no onset, or its peak may still change
-(complete 0).
+a case lacks its data, has no onset, or its pressure has not yet fallen
+from its peak for one averaging width (complete 0; spouted.ramp_onset:
+before the ramp's end a complete peak is still a judgement).
 """
 import argparse
 import os

@@ -127,7 +127,8 @@ def later_segment_wins(rows, key):
 
 
 def function_object_segments(case, name, fname):
-    """Paths of postProcessing/<name>/<start time>/<fname>, a run's and its
+    """Paths of postProcessing/<name>/<start time>/<fname> (name may be a
+    glob pattern, e.g. "*"), a run's and its
     continuations' (each starts a directory named by its start time), in
     the order they were written: by start time, and within one start time
     <stem>.dat before <stem>_<start>.dat. OpenFOAM's writeFile names a

@@ -161,11 +161,10 @@ def read_controller(case):
     """flowController logs of all run segments, concatenated by time:
     columns time, Umean, Ubar, force[m/s^2], force[N/m^3], r, updated."""
     from foamdem import caseio
-    paths = glob.glob(os.path.join(case, "postProcessing", "*", "*", "flowController.dat"))
     rows = []
     # segments in the order they ran (by start time); a continuation's rows
     # replace the earlier segment's from its first time on
-    for f in sorted(paths, key=lambda p: float(os.path.basename(os.path.dirname(p)))):
+    for f in caseio.function_object_segments(case, "*", "flowController.dat"):
         rows.extend(np.loadtxt(f, ndmin=2))
     if not rows:
         raise ValueError("%s: no flowController.dat" % case)

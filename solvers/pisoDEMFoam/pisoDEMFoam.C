@@ -41,6 +41,7 @@ Description
 #include "fvOptions.H"
 #include "demCoupling.H"
 #include "cellReconstruct.H"
+#include "writeAtEndTime.H"
 #include "sigFpe.H"
 
 typedef Foam::PhaseIncompressibleTurbulenceModel
@@ -74,6 +75,8 @@ int main(int argc, char *argv[])
 
     while (runTime.run())
     {
+        // the last step is written, also off the write grid (continuable)
+        foamDEM::writeAtEndTime(runTime);
         ++runTime;
         Info<< "Time = " << runTime.timeName() << nl << endl;
 

@@ -17,6 +17,8 @@ write
 --ci          the CI variant (ci* entries)
 --set NAME    override the dictionary's set
 --np N        DEM processor grid (N 1 1) and the CFD decomposition
+--end T       stop the coupled run at T (after the start, at most the
+              schedule's end; the solver writes there: continuable)
 --representation spheres|clumps   override the dictionary's representation
 --fraction F  keep this fraction of each shape's particles (default 1,
               ciFraction with --ci)
@@ -158,6 +160,19 @@ def continued_run(args, path, what="--continue"):
     args.realisation = own["realisation"]
 
 
+def run_outputs():
+    """What a run of this case has written (its coupled stage's times,
+    decomposition, DEM restarts, logs and function-object output; the
+    fill's history and restarts): a new start here would mix with it or
+    delete it."""
+    return sorted([d for d in caseio.time_dirs(".") if float(d) > 0] +
+                  glob.glob("processor*") + glob.glob("DEM/restart/*.restart") +
+                  glob.glob("log.pisoDEMFoam*") +
+                  [f for f in ("postProcessing", "DEM/post/height.dat",
+                               "DEM/post/filled.restart", "DEM/post/fill.restart")
+                   if os.path.exists(f)])
+
+
 def map_source(source, time):
     """Check the run to map from (Allrun -mapFrom) before anything is
     written: its DEM restart and its fields of TIME, its particle
@@ -175,14 +190,10 @@ def map_source(source, time):
                  " DEM/restart)" % (source, time, time, source))
     need(os.path.join(source, "DEM", "post", "particles.dat"), "its particle description")
     need(os.path.join(source, "DEM", "post", "setupDict"), "its set-up")
-    ran = [d for d in caseio.time_dirs(".") if float(d) > 0] + \
-        glob.glob("processor*") + glob.glob("DEM/restart/*.restart") + \
-        glob.glob("log.pisoDEMFoam*") + \
-        [f for f in ("postProcessing", "DEM/post/height.dat", "DEM/post/filled.restart")
-         if os.path.exists(f)]
+    ran = run_outputs()
     if ran:
         sys.exit("prepare.py --map-from: this case has run already (%s); map"
-                 " into a clean case (./Allclean)" % " ".join(sorted(ran)[:3]))
+                 " into a clean case (./Allclean)" % " ".join(ran[:3]))
 
 
 def copy_until(src, dst, t_end):
@@ -391,6 +402,7 @@ def main():
     ap.add_argument("--ci", action="store_true")
     ap.add_argument("--set", default=None)
     ap.add_argument("--np", type=int, default=1)
+    ap.add_argument("--end", type=float, default=None)
     ap.add_argument("--continue", dest="cont", action="store_true")
     ap.add_argument("--representation", default=None, choices=("spheres", "clumps"))
     ap.add_argument("--fraction", type=float, default=None)
@@ -401,6 +413,14 @@ def main():
     P = read_props(case)
     if args.map_from and args.cont:
         sys.exit("prepare.py: --map-from starts a new run; it does not go with --continue")
+    if args.np < 1:
+        sys.exit("prepare.py: --np %d: the number of processes must be 1 or more" % args.np)
+    if not args.cont and not args.map_from:
+        ran = run_outputs()
+        if ran:
+            sys.exit("prepare.py: this case has run already (%s); a new run would"
+                     " delete or mix with its results: continue it (Allrun -continue)"
+                     " or clean it first (./Allclean)" % " ".join(ran[:3]))
     if args.cont:
         continued_run(args, os.path.join(case, "DEM", "post", "particles.dat"))
     if args.map_from:
@@ -499,6 +519,33 @@ def main():
     table, windows = schedule(P, args.ci)
     t_end = table[-1][0]
 
+    start_time, restart, fresh = "0", "DEM/post/filled.restart", 1
+    if args.cont:
+        best = None
+        # a decomposed run writes its times in processor0/
+        where = os.path.join(case, "processor0") \
+            if os.path.isdir(os.path.join(case, "processor0")) else case
+        for d in caseio.time_dirs(where):
+            if float(d) > 0 and os.path.exists(
+                    os.path.join(case, "DEM", "restart", "%s.restart" % d)):
+                best = d
+        # the solver hands the DEM script that restart (foamDEMRestart);
+        # without a write the coupled stage starts again from the fill
+        # (Allrun continues the fill first if it did not end)
+        if best is not None:
+            start_time, restart, fresh = best, "DEM/restart/%s.restart" % best, 0
+    if args.map_from:
+        start_time, restart, fresh = map_time, "DEM/restart/%s.restart" % map_time, 0
+    # where the coupled run stops: the schedule's end, or --end (the solver
+    # writes there, also between write times)
+    t_stop = t_end
+    if args.end is not None:
+        if not float(start_time) < args.end <= t_end * (1 + 1e-12):
+            sys.exit("prepare.py: --end %g: the coupled run's end must be after its"
+                     " start (%s s) and at most the schedule's end (%.9g s)"
+                     % (args.end, start_time, t_end))
+        t_stop = args.end
+
     post = os.path.join(case, "DEM", "post")
     for d in (post, os.path.join(post, "restart"), os.path.join(post, "dump")):
         os.makedirs(d, exist_ok=True)
@@ -541,23 +588,6 @@ def main():
         "writeSteps": steps(p("writeInterval")),
         "nProcX": args.np, "clumps": int(clumps),
     }
-    start_time, restart, fresh = "0", "DEM/post/filled.restart", 1
-    if args.cont:
-        best = None
-        # a decomposed run writes its times in processor0/
-        where = os.path.join(case, "processor0") \
-            if os.path.isdir(os.path.join(case, "processor0")) else case
-        for d in caseio.time_dirs(where):
-            if float(d) > 0 and os.path.exists(
-                    os.path.join(case, "DEM", "restart", "%s.restart" % d)):
-                best = d
-        # the solver hands the DEM script that restart (foamDEMRestart);
-        # without a write the coupled stage starts again from the fill
-        # (Allrun continues the fill first if it did not end)
-        if best is not None:
-            start_time, restart, fresh = best, "DEM/restart/%s.restart" % best, 0
-    if args.map_from:
-        start_time, restart, fresh = map_time, "DEM/restart/%s.restart" % map_time, 0
     with open(os.path.join(post, "setup.lig"), "w") as f:
         f.write("# Generated by Allrun (prepare.py) from %s; do not edit\n" % PROPS)
         for k, v in lig.items():
@@ -618,18 +648,21 @@ def main():
         f.write("fix m6 all property/global characteristicVelocity scalar %.6g\n"
                 % P["characteristicVelocity"])
     realisation_tag = "; realisation %d" % realisation if realisation else ""
+    # the fraction as given (read back by --continue): %g where that is
+    # exact, as every earlier set-up wrote it, else all its digits
+    frac_text = "%g" % frac if float("%g" % frac) == frac else repr(frac)
     with open(os.path.join(post, "particles.dat"), "w") as f:
         if clumps:
             f.write("# set %s%s, representation clumps: multisphere bodies of"
                     " spheresPerParticle spheres of the plate's thickness or the rod's"
                     " diameter; mass = table mass, inertia = ideal shape's x mass ratio;"
-                    " fraction %g%s\n" % (set_name, " (CI)" if args.ci else "", frac,
-                                           realisation_tag))
+                    " fraction %s%s\n" % (set_name, " (CI)" if args.ci else "",
+                                           frac_text, realisation_tag))
         else:
             f.write("# set %s%s, representation spheres: one sphere per particle, d ="
                     " d_v of the ideal shape, density = table mass / ideal volume;"
-                    " fraction %g%s\n" % (set_name, " (CI)" if args.ci else "", frac,
-                                           realisation_tag))
+                    " fraction %s%s\n" % (set_name, " (CI)" if args.ci else "",
+                                           frac_text, realisation_tag))
         f.write("# type name kind grams count mass_kg idealVolume_m3 d_v_m density_kg_m3"
                 " massOverIdealMass spheresPerParticle\n")
         for row in rows:
@@ -661,7 +694,7 @@ def main():
         geo = {"xb": w0 / 2, "mxb": -w0 / 2, "xt": w1 / 2, "mxt": -w1 / 2,
                "T": T, "Hc": Hc, "Htop": Hc + Hu, "coneGrading": grading,
                "probeZ": P["probeHeight"], "probeY": T / 2,
-               "deltaT": dt_cfd, "endTime": t_end, "writeInterval": p("writeInterval")}
+               "deltaT": dt_cfd, "endTime": t_stop, "writeInterval": p("writeInterval")}
         for k, v in geo.items():
             f.write("%-16s %.12g;\n" % (k, v))
         f.write("%-16s %d;\n" % ("nWidth", int(p("nWidth"))))
@@ -690,13 +723,13 @@ def main():
     print("spoutedBed%s: set %s, representation %s (%d spheres), %d particles (%s), cone %.4g m tall (%d cells,"
           " grading %.3g), upper %.4g m (%d cells), %d x %d cells across; DEM step"
           " %.3g s (%.0f %% of the smallest Rayleigh time %.3g s), CFD step %.3g s;"
-          " schedule to %.4g s; start %s"
+          " schedule to %.4g s; start %s, end %.9g"
           % (" (CI)" if args.ci else "", set_name, rep,
              sum(row["n"] * row["spheres"] for row in rows), N,
              ", ".join("%s %d" % (row["name"], row["n"]) for row in present),
              Hc, nCone, grading, Hu, int(p("nUpper")), int(p("nWidth")),
              int(P["nThickness"]), dt, 100 * dt / min(dt_r), min(dt_r), dt_cfd,
-             t_end, start_time))
+             t_end, start_time, t_stop))
 
 
 if __name__ == "__main__":

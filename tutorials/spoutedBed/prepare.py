@@ -259,7 +259,8 @@ def map_check_setup(source, time, post):
                  " source's in: %s. A run started from another run's state takes"
                  " its particles, materials, steps, domain, probe and schedule:"
                  " give this case the source's %s apart from the mesh keys"
-                 " (nWidth, nThickness, firstCellHeight, lastConeCell, nUpper)"
+                 " (nWidth, nThickness, firstCellHeight, lastConeCell, nUpper; with"
+                 " --ci, ciNWidth and ciNUpper)"
                  % (source, time, "; ".join(differ), PROPS))
 
 

@@ -33,6 +33,22 @@ foreach(bad ${BAD_CASES})
     endif()
 endforeach()
 
+# The long tutorials' Allrun on bad command lines (no solver runs): an
+# option without its value ('-end -continue' must not start a new run), an
+# unknown option, -np 0, -end at the start (spoutedBed: past its schedule)
+# or not a number, and a
+# new run on a case that has run stop with a message naming the option or
+# the run's outputs, and leave the case's files as they were
+# (checkAllrunRefusals). Seen failing with the Allrun and prepare.py of
+# spoutedBed from before these checks (17 failures: -lift on over a run
+# started a new fill and deleted its 100 Hz history)
+foreach(tut spoutedBed densePneumaticConveying cohesiveBedEvacuation)
+    add_test(NAME badInput.allrun.${tut}
+        COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkAllrunRefusals ${tut}
+                ${FOAMDEM_WORK}/badInput/allrun_${tut})
+    set_tests_properties(badInput.allrun.${tut} PROPERTIES LABELS badInput TIMEOUT 600)
+endforeach()
+
 # Bad input in a DEM-only stage (foamDEMLiggghts, the tutorials' packing):
 # the LIGGGHTS error and the failing command on stderr and in the log,
 # non-zero exit, every rank stopped

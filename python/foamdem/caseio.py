@@ -1,6 +1,8 @@
 """Read the small things a foamDEM validation needs from a case directory."""
+import glob
 import os
 import re
+import sys
 
 _NUMBER = r"[-+0-9.eE]+"
 
@@ -56,6 +58,43 @@ def time_dirs(case):
         except ValueError:
             pass
     return [name for _, name in sorted(times)]
+
+
+def run_outputs(case=".", extra=()):
+    """What a run of a tutorial case has written, relative to the case: its
+    time directories after 0, processor directories, the library's DEM
+    restarts, the solver's logs, postProcessing, and the case's own
+    outputs (EXTRA: paths or glob patterns, e.g. a DEM stage's restart).
+    A new run on such a case would delete or mix with them."""
+    found = [d for d in time_dirs(case) if float(d) > 0]
+    for pattern in ("processor*", "DEM/restart/*.restart", "log.pisoDEMFoam*",
+                    "postProcessing") + tuple(extra):
+        found += [os.path.relpath(f, case) for f in glob.glob(os.path.join(case, pattern))]
+    return sorted(set(found))
+
+
+def refuse_new_run(case=".", extra=(), who="prepare.py"):
+    """Stop (sys.exit, nothing written) when the case has run (run_outputs):
+    a tutorial's ./Allrun without -continue must not delete its results or
+    mix its output with theirs."""
+    ran = run_outputs(case, extra)
+    if ran:
+        sys.exit("%s: this case has run already (%s); a new run would delete or"
+                 " mix with its results: continue it (Allrun -continue) or clean"
+                 " it first (./Allclean)" % (who, " ".join(ran[:3])))
+
+
+def check_end(end, start, last=None, who="prepare.py"):
+    """The end a run is stopped at (Allrun -end T): after its start and, if
+    LAST is given (a schedule's end), at most LAST; stops (sys.exit)
+    otherwise. Without LAST a run may go on past the case's endTime."""
+    if not float(start) < end:
+        sys.exit("%s: --end %g: the coupled run's end must be after its start"
+                 " (%s s)" % (who, end, start))
+    if last is not None and end > last * (1 + 1e-12):
+        sys.exit("%s: --end %g: the coupled run's end must be at most the"
+                 " schedule's end (%.9g s)" % (who, end, last))
+    return end
 
 
 def scalar_field_values(path):

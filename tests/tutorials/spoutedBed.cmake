@@ -21,19 +21,6 @@ add_test(NAME spoutedBed.endWrite
 set_tests_properties(spoutedBed.endWrite PROPERTIES
     LABELS "integration;tutorial" TIMEOUT 30 FIXTURES_REQUIRED spoutedBed_ci)
 
-# Allrun's refusals (no solver runs): an option without its value ('-end
-# -continue' must not start a new run), an unknown option, -np 0, -end
-# past the schedule or not a number, and a new run on a case that has run
-# stop with a message naming the option or the run's outputs, and leave
-# the case's files as they were (checkAllrunRefusals). Seen failing with
-# the Allrun and prepare.py of before these checks (17 failures: a fresh
-# fill started over a run, its 100 Hz history deleted)
-add_test(NAME badInput.spoutedBedAllrun
-    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkAllrunRefusals
-            ${FOAMDEM_WORK}/spoutedBed_refusals)
-set_tests_properties(badInput.spoutedBedAllrun PROPERTIES
-    LABELS "badInput;tutorial" TIMEOUT 600)
-
 # The same at np 2: the DEM and the mesh cut across the width through the
 # spout; the shaped spheres' orientations move with them between ranks
 add_test(NAME parallel.spoutedBed.ci

@@ -13,6 +13,10 @@
 
 --ci        the CI variant (ci* entries)
 --np N      processes (DEM grid and CFD decomposition, N slabs along x)
+--end T     stop the coupled run at T instead of endTime (the solver writes
+            there: Allrun -continue goes on to endTime, or to a later -end)
+A new run refuses a case that has run (its writes, DEM restarts, logs, the
+fill's bed or history): ./Allclean first.
 """
 import argparse
 import math
@@ -203,8 +207,14 @@ def main():
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--ci", action="store_true")
     ap.add_argument("--np", type=int, default=1)
+    ap.add_argument("--end", type=float, default=None)
     args = ap.parse_args()
+    if args.np < 1:
+        sys.exit("prepare.py: --np %d: the number of processes must be 1 or more" % args.np)
+    caseio.refuse_new_run(".", ("DEM/post/packed.restart", "DEM/post/evacuation.dat",
+                                "DEM/post/dump/*"))
     P = read_props(".", args.ci)
+    t_stop = P["endTime"] if args.end is None else caseio.check_end(args.end, 0)
 
     S0, sz = geometry(P)
     vol = S0.volume(["walls", "supply", "vent"])
@@ -254,7 +264,9 @@ def main():
         f.write("surfaceLevel %d;\n" % int(P["surfaceLevel"]))
         f.write("insidePoint (%.9g %.9g %.9g);\n" % inside)
         f.write("endTime %.9g;\ndeltaT %.12g;\nwriteInterval %.9g;\n"
-                % (P["endTime"], dt_cfd, P["writeInterval"]))
+                % (t_stop, dt_cfd, P["writeInterval"]))
+        # the case's own end, which Allrun -continue goes on to without -end
+        f.write("caseEndTime %.9g;\n" % P["endTime"])
     # Gas at the boundaries (kinematic), k and epsilon at the supply
     rho_g = P["rhoGas"]
     with open("DEM/post/setupDict", "a") as f:

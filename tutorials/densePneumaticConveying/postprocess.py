@@ -51,6 +51,7 @@ reported).
 import argparse
 import glob
 import os
+import re
 import sys
 
 import numpy as np
@@ -74,8 +75,12 @@ SMOOTH_TIME = 0.025     # half-width of the slug velocity fit [s]
 
 
 def concat_history(case):
+    """The DEM history of every segment (history_<start step>.dat), joined
+    in the order of their start steps; where segments overlap, the later
+    segment's rows replace the earlier's."""
     rows = []
-    for f in glob.glob(os.path.join(case, "DEM/post/history_*.dat")):
+    files = glob.glob(os.path.join(case, "DEM/post/history_*.dat"))
+    for f in sorted(files, key=lambda f: int(re.search(r"history_(\d+)\.dat$", f).group(1))):
         d = np.loadtxt(f, ndmin=2)
         if d.size:
             rows.append(d)

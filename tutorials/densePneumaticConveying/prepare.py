@@ -14,6 +14,10 @@ controlDict, fvOptions entries).
             the rest along x: (N/2 1 2) for even N, (N 1 1) for odd N. The
             halves across the pipe hold the same load whatever the slug's
             position; an x split puts the slug on one rank at a time.
+--end T     stop the coupled run at T instead of endTime (after its start;
+            the solver writes there: continuable)
+A new run (no --continue) refuses a case that has run (its writes, DEM
+restarts, logs, packing or DEM histories): ./Allclean first.
 """
 import argparse
 import math
@@ -112,8 +116,12 @@ def main():
     ap.add_argument("--ci", action="store_true")
     ap.add_argument("--continue", dest="cont", action="store_true")
     ap.add_argument("--np", type=int, default=1)
+    ap.add_argument("--end", type=float, default=None)
     args = ap.parse_args()
     case = args.case
+    if not args.cont:
+        caseio.refuse_new_run(case, ("DEM/post/packed.restart", "DEM/post/history_*.dat",
+                                     "DEM/post/dump/*"))
 
     par = caseio.liggghts_variables(os.path.join(case, "DEM/parameters"))
 
@@ -220,7 +228,10 @@ def main():
         fresh, segment = 1, "0"
 
     if args.np < 1:
-        sys.exit("prepare.py: --np must be at least 1, got %d" % args.np)
+        sys.exit("prepare.py: --np %d: the number of processes must be 1 or more" % args.np)
+    # where the coupled run stops: endTime, or --end (the solver writes there)
+    t_stop = p("endTime") if args.end is None else \
+        caseio.check_end(args.end, start_time)
     grid = (args.np // 2, 1, 2) if args.np % 2 == 0 else (args.np, 1, 1)
 
     post = os.path.join(case, "DEM", "post")
@@ -267,7 +278,7 @@ def main():
         f.write("%-14s %d;\n" % ("nRadial", int(par["nRadial"])))
         f.write("%-14s %d;\n" % ("nx", nx))
         f.write("%-14s %s;\n" % ("startTime", start_time))
-        f.write("%-14s %.12g;\n" % ("endTime", p("endTime")))
+        f.write("%-14s %.12g;\n" % ("endTime", t_stop))
         f.write("%-14s %.12g;\n" % ("writeInterval", p("writeInterval")))
         f.write("%-14s %.12g;\n" % ("gasVelocity", par["gasVelocity"]))
         f.write("%-14s (%d %d %d);\n" % (("decomposition",) + grid))

@@ -160,17 +160,8 @@ def continued_run(args, path, what="--continue"):
     args.realisation = own["realisation"]
 
 
-def run_outputs():
-    """What a run of this case has written (its coupled stage's times,
-    decomposition, DEM restarts, logs and function-object output; the
-    fill's history and restarts): a new start here would mix with it or
-    delete it."""
-    return sorted([d for d in caseio.time_dirs(".") if float(d) > 0] +
-                  glob.glob("processor*") + glob.glob("DEM/restart/*.restart") +
-                  glob.glob("log.pisoDEMFoam*") +
-                  [f for f in ("postProcessing", "DEM/post/height.dat",
-                               "DEM/post/filled.restart", "DEM/post/fill.restart")
-                   if os.path.exists(f)])
+# the fill's outputs, besides those of every tutorial (caseio.run_outputs)
+FILL_OUTPUTS = ("DEM/post/height.dat", "DEM/post/filled.restart", "DEM/post/fill.restart")
 
 
 def map_source(source, time):
@@ -190,7 +181,7 @@ def map_source(source, time):
                  " DEM/restart)" % (source, time, time, source))
     need(os.path.join(source, "DEM", "post", "particles.dat"), "its particle description")
     need(os.path.join(source, "DEM", "post", "setupDict"), "its set-up")
-    ran = run_outputs()
+    ran = caseio.run_outputs(".", FILL_OUTPUTS)
     if ran:
         sys.exit("prepare.py --map-from: this case has run already (%s); map"
                  " into a clean case (./Allclean)" % " ".join(ran[:3]))
@@ -417,11 +408,7 @@ def main():
     if args.np < 1:
         sys.exit("prepare.py: --np %d: the number of processes must be 1 or more" % args.np)
     if not args.cont and not args.map_from:
-        ran = run_outputs()
-        if ran:
-            sys.exit("prepare.py: this case has run already (%s); a new run would"
-                     " delete or mix with its results: continue it (Allrun -continue)"
-                     " or clean it first (./Allclean)" % " ".join(ran[:3]))
+        caseio.refuse_new_run(".", FILL_OUTPUTS)
     if args.cont:
         continued_run(args, os.path.join(case, "DEM", "post", "particles.dat"))
     if args.map_from:
@@ -539,13 +526,7 @@ def main():
         start_time, restart, fresh = map_time, "DEM/restart/%s.restart" % map_time, 0
     # where the coupled run stops: the schedule's end, or --end (the solver
     # writes there, also between write times)
-    t_stop = t_end
-    if args.end is not None:
-        if not float(start_time) < args.end <= t_end * (1 + 1e-12):
-            sys.exit("prepare.py: --end %g: the coupled run's end must be after its"
-                     " start (%s s) and at most the schedule's end (%.9g s)"
-                     % (args.end, start_time, t_end))
-        t_stop = args.end
+    t_stop = t_end if args.end is None else caseio.check_end(args.end, start_time, t_end)
 
     post = os.path.join(case, "DEM", "post")
     for d in (post, os.path.join(post, "restart"), os.path.join(post, "dump")):

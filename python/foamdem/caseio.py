@@ -73,15 +73,15 @@ def run_outputs(case=".", extra=()):
     return sorted(set(found))
 
 
-def refuse_new_run(case=".", extra=(), who="prepare.py"):
+def refuse_new_run(case=".", extra=(), who="prepare.py",
+                   advice="continue it (Allrun -continue) or clean it first (./Allclean)"):
     """Stop (sys.exit, nothing written) when the case has run (run_outputs):
     a tutorial's ./Allrun without -continue must not delete its results or
-    mix its output with theirs."""
+    mix its output with theirs. ADVICE: what to do instead."""
     ran = run_outputs(case, extra)
     if ran:
         sys.exit("%s: this case has run already (%s); a new run would delete or"
-                 " mix with its results: continue it (Allrun -continue) or clean"
-                 " it first (./Allclean)" % (who, " ".join(ran[:3])))
+                 " mix with its results: %s" % (who, " ".join(ran[:3]), advice))
 
 
 def check_end(end, start, last=None, who="prepare.py"):

@@ -181,10 +181,8 @@ def map_source(source, time):
                  " DEM/restart)" % (source, time, time, source))
     need(os.path.join(source, "DEM", "post", "particles.dat"), "its particle description")
     need(os.path.join(source, "DEM", "post", "setupDict"), "its set-up")
-    ran = caseio.run_outputs(".", FILL_OUTPUTS)
-    if ran:
-        sys.exit("prepare.py --map-from: this case has run already (%s); map"
-                 " into a clean case (./Allclean)" % " ".join(ran[:3]))
+    caseio.refuse_new_run(".", FILL_OUTPUTS, "prepare.py --map-from",
+                          "map into a clean case (./Allclean)")
 
 
 def copy_until(src, dst, t_end):

@@ -36,12 +36,15 @@ endforeach()
 # The long tutorials' Allrun on bad command lines (no solver runs): an
 # option without its value ('-end -continue' must not start a new run), an
 # unknown option, -np 0, -end at the start (spoutedBed: past its schedule)
-# or not a number, and a
-# new run on a case that has run stop with a message naming the option or
-# the run's outputs, and leave the case's files as they were
+# or not a number, a new run on a case that has run, and -continue on
+# another number of processes or variant (-ci) than the run's or past the
+# case's end stop with a message naming the option, the run's outputs or
+# what to give instead, and leave the case's files as they were
 # (checkAllrunRefusals). Seen failing with the Allrun and prepare.py of
 # spoutedBed from before these checks (17 failures: -lift on over a run
-# started a new fill and deleted its 100 Hz history)
+# started a new fill and deleted its 100 Hz history), and with those of
+# a2a8a0b (1, 10 and 18 failures: a -continue on 1 of 2 processors went on
+# to the solver; cohesiveBedEvacuation's changed setupDict first)
 foreach(tut spoutedBed densePneumaticConveying cohesiveBedEvacuation)
     add_test(NAME badInput.allrun.${tut}
         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkAllrunRefusals ${tut}

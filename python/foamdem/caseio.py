@@ -97,6 +97,21 @@ def check_end(end, start, last=None, who="prepare.py"):
     return end
 
 
+def check_variant(setup, ci, who="prepare.py --continue"):
+    """A continued run's -ci must be the run's own: SETUP (the set-up
+    prepare.py wrote when the run started) says 'variant ci;' or 'variant
+    full;'. Stops (sys.exit, nothing written) on another; a set-up without
+    the entry (an older version's) is taken as it comes."""
+    try:
+        own = foam_entry(setup, "variant")
+    except (IOError, OSError, KeyError):
+        return
+    if own != ("ci" if ci else "full"):
+        sys.exit("%s: the run was set up %s the CI variant (%s): continue it %s -ci"
+                 % (who, "as" if own == "ci" else "without", setup,
+                    "with" if own == "ci" else "without"))
+
+
 def scalar_field_values(path):
     """Internal values of a volScalarField file (uniform or nonuniform)."""
     text = open(path).read()

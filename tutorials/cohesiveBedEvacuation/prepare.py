@@ -15,6 +15,9 @@
 --np N      processes (DEM grid and CFD decomposition, N slabs along x)
 --end T     stop the coupled run at T instead of endTime (the solver writes
             there: Allrun -continue goes on to endTime, or to a later -end)
+--continue  only set the end of a continued run (Allrun -continue) in
+            DEM/post/setupDict: --end T, after the run's latest write, or the
+            case's endTime; -ci must be the run's own
 A new run refuses a case that has run (its writes, DEM restarts, logs, the
 fill's bed or history): ./Allclean first.
 """
@@ -202,15 +205,43 @@ def geometry(P):
     return S, sizes
 
 
+def continue_end(args, setup="DEM/post/setupDict"):
+    """The end of a continued run, written as SETUP's endTime: --end T
+    (after the run's latest write) or the case's own end (caseEndTime: a
+    run stopped by -end goes on to it)."""
+    if not os.path.exists(setup):
+        sys.exit("prepare.py --continue: no %s: the case has not run (./Allrun)" % setup)
+    caseio.check_variant(setup, args.ci)
+    writes = [t for t in caseio.time_dirs("processor0" if args.np > 1 else ".")
+              if float(t) > 0]
+    latest = writes[-1] if writes else "0"
+    if args.end is not None:
+        end = caseio.check_end(args.end, latest, who="prepare.py --continue")
+    else:
+        try:
+            end = float(caseio.foam_entry(setup, "caseEndTime"))
+        except KeyError:
+            return      # a set-up of an older version: its endTime as it is
+        if not float(latest) < end:
+            sys.exit("prepare.py --continue: the run has reached the case's end (%s s,"
+                     " latest write %s): continue it to a later -end T" % (end, latest))
+    text = open(setup).read()
+    open(setup, "w").write(re.sub(r"(?m)^endTime .*$", "endTime %.9g;" % end, text))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--ci", action="store_true")
     ap.add_argument("--np", type=int, default=1)
     ap.add_argument("--end", type=float, default=None)
+    ap.add_argument("--continue", dest="cont", action="store_true")
     args = ap.parse_args()
     if args.np < 1:
         sys.exit("prepare.py: --np %d: the number of processes must be 1 or more" % args.np)
+    if args.cont:
+        continue_end(args)
+        return
     caseio.refuse_new_run(".", ("DEM/post/packed.restart", "DEM/post/evacuation.dat",
                                 "DEM/post/dump/*"))
     P = read_props(".", args.ci)
@@ -258,6 +289,7 @@ def main():
     dt = dt_cfd / nc
     with open("DEM/post/setupDict", "w") as f:
         f.write("// written by prepare.py from %s%s\n" % (PROPS, " (ci)" if args.ci else ""))
+        f.write("variant %s;\n" % ("ci" if args.ci else "full"))
         f.write("xMin %.9g;\nyMin %.9g;\nzMin %.9g;\n" % tuple(lo))
         f.write("xMax %.9g;\nyMax %.9g;\nzMax %.9g;\n" % tuple(hi))
         f.write("nx %d;\nny %d;\nnz %d;\n" % tuple(ncell))

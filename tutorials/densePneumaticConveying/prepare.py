@@ -4,7 +4,8 @@ packing and the coupled run's output intervals from DEM/parameters and write
 DEM/post/setup.lig (LIGGGHTS variables) and DEM/post/setupDict (blockMesh,
 controlDict, fvOptions entries).
 
---ci        the CI variant (ci* values of DEM/parameters)
+--ci        the CI variant (ci* values of DEM/parameters); a continued run
+            must be given the same (setupDict's variant)
 --continue  resume the coupled run: start from the latest time that has both
             OpenFOAM fields and the library's DEM restart of that time
             (DEM/restart/<time>.restart, writeDEMRestart; a run written
@@ -119,9 +120,12 @@ def main():
     ap.add_argument("--end", type=float, default=None)
     args = ap.parse_args()
     case = args.case
+    variant = "ci" if args.ci else "full"
     if not args.cont:
         caseio.refuse_new_run(case, ("DEM/post/packed.restart", "DEM/post/history_*.dat",
                                      "DEM/post/dump/*"))
+    else:
+        caseio.check_variant(os.path.join(case, "DEM", "post", "setupDict"), args.ci)
 
     par = caseio.liggghts_variables(os.path.join(case, "DEM/parameters"))
 
@@ -277,6 +281,7 @@ def main():
         f.write("%-14s %d;\n" % ("nSquare", int(par["nSquare"])))
         f.write("%-14s %d;\n" % ("nRadial", int(par["nRadial"])))
         f.write("%-14s %d;\n" % ("nx", nx))
+        f.write("%-14s %s;\n" % ("variant", variant))
         f.write("%-14s %s;\n" % ("startTime", start_time))
         f.write("%-14s %.12g;\n" % ("endTime", t_stop))
         f.write("%-14s %.12g;\n" % ("writeInterval", p("writeInterval")))

@@ -50,8 +50,11 @@ def liggghts_variables(path):
 
 
 def time_dirs(case):
-    """Numeric time directories of a case, sorted."""
+    """Numeric time directories of a case, sorted (none if CASE is not a
+    directory)."""
     times = []
+    if not os.path.isdir(case):
+        return []
     for name in os.listdir(case):
         try:
             times.append((float(name), name))

@@ -52,7 +52,8 @@ def run(law, work, ci):
     if os.path.exists(case):
         shutil.rmtree(case)
     shutil.copytree(HERE, case, ignore=shutil.ignore_patterns(
-        "results", "VTK", "processor*", "log.*", "post", "[1-9]*", "0.[0-9]*"))
+        "results", "VTK", "processor*", "log.*", "post", "restart", "postProcessing",
+        "[1-9]*", "0.[0-9]*"))
     cmd = ["./Allrun", "-drag", law] + (["-ci"] if ci else [])
     print("%-10s %s" % (law, " ".join(cmd)), flush=True)
     start = time.monotonic()

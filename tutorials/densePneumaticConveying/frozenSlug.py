@@ -90,12 +90,18 @@ def field(path):
     return a.reshape(n, 3) if k == 3 else a
 
 
+# a run's outputs, left out of the copies (prepare.py refuses a case that
+# has run)
+RUN_OUTPUTS = shutil.ignore_patterns("results", "VTK", "processor*", "log.*", "post", "restart",
+                                     "postProcessing", "[1-9]*", "0.[0-9]*")
+
+
 def pack(work, np_):
     case = os.path.join(work, "pack")
     if os.path.exists(os.path.join(case, "DEM/post/packed.restart")):
         return case
     shutil.rmtree(case, ignore_errors=True)
-    shutil.copytree(HERE, case, ignore=shutil.ignore_patterns("results", "processor*", "log.*"))
+    shutil.copytree(HERE, case, ignore=RUN_OUTPUTS)
     sens.v_demStep10(case)
     run([sys.executable, "prepare.py", "--np", str(np_)], case, "log.prepare")
     t0 = time.time()
@@ -113,7 +119,7 @@ def frozen(work, packed, name, edit, interval, end):
     if os.path.exists(os.path.join(case, "done")):
         return case
     shutil.rmtree(case, ignore_errors=True)
-    shutil.copytree(HERE, case, ignore=shutil.ignore_patterns("results", "processor*", "log.*"))
+    shutil.copytree(HERE, case, ignore=RUN_OUTPUTS)
     sens.v_demStep10(case)
     if edit:
         edit(case)

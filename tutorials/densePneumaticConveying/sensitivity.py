@@ -341,7 +341,8 @@ def run_variant(name, edit, work, args):
         if os.path.exists(case):
             shutil.rmtree(case)
         shutil.copytree(HERE, case, ignore=shutil.ignore_patterns(
-            "results", "VTK", "processor*", "log.*", "post", "[1-9]*", "0.[0-9]*"))
+            "results", "VTK", "processor*", "log.*", "post", "restart", "postProcessing",
+            "[1-9]*", "0.[0-9]*"))
         if edit:
             edit(case)
         allrun = ["./Allrun", "-np", str(args.np), "-end", str(args.end)]

@@ -58,6 +58,20 @@ foreach(tut spoutedBed densePneumaticConveying cohesiveBedEvacuation
     set_tests_properties(badInput.allrun.${tut} PROPERTIES LABELS badInput TIMEOUT 600)
 endforeach()
 
+# ./Allclean puts back the files an Allrun option edited (-ci, -drag, -dt,
+# -ddt: foamDEMEdit, foamDEMRestoreOriginals) and keeps a file changed by
+# hand since (checkAllcleanRestores: settlingSphere and ErgunPackedBed CI
+# runs, a continuation, two changes by hand, the other Allcleans). Seen
+# failing with the scripts of 202ab58 (Allclean left 2 and 4 edited files:
+# a later ./Allrun ran with the earlier -drag and -ci endTime), with
+# foamDEMContinue's startFrom set by plain sed, with foamDEMEdit taking
+# over a change by hand, and with fluidizedBed's Allclean not restoring
+add_test(NAME tutorials.allcleanRestores
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkAllcleanRestores
+            ${FOAMDEM_WORK}/allcleanRestores)
+set_tests_properties(tutorials.allcleanRestores PROPERTIES
+    LABELS "integration;tutorial" TIMEOUT 600)
+
 # Bad input in a DEM-only stage (foamDEMLiggghts, the tutorials' packing):
 # the LIGGGHTS error and the failing command on stderr and in the log,
 # non-zero exit, every rank stopped

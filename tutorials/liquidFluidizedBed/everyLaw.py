@@ -53,6 +53,8 @@ def start(law, work, ci):
     shutil.copytree(HERE, case, ignore=shutil.ignore_patterns(
         "results", "VTK", "processor*", "log.*", "post", "restart", "[1-9]*", "0.[0-9]*",
         "postProcessing"))
+    # (the files an option of a run in the tutorial itself edited, put back)
+    subprocess.run(["./Allclean"], cwd=case, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     cmd = ["./Allrun", "-drag", law] + (["-ci"] if ci else [])
     print("%-10s %s" % (law, " ".join(cmd)), flush=True)
     log = open(os.path.join(case, "log.everyLaw"), "w")

@@ -79,12 +79,10 @@ def prepare(case, work, d_over_h, correct, extra, box, end_time):
         # Allrun -ci sets endTime 0.25 and writeInterval 0.05
         allrun = os.path.join(work, "Allrun")
         text = open(allrun).read()
-        old = "-entry endTime -set 0.25"
+        old = "endTime 0.25 writeInterval 0.05"
         if text.count(old) != 1:
             sys.exit("meshConvergence.py: Allrun -ci no longer sets endTime 0.25")
-        text = text.replace(old, "-entry endTime -set %g" % end_time)
-        text = text.replace("-entry writeInterval -set 0.05",
-                            "-entry writeInterval -set %g" % end_time)
+        text = text.replace(old, "endTime %g writeInterval %g" % (end_time, end_time))
         open(allrun, "w").write(text)
     return n
 

@@ -100,6 +100,12 @@ def check_end(end, start, last=None, who="prepare.py"):
     return end
 
 
+def variant(ci):
+    """The set-up's 'variant' entry (setupDict) of a run with or without
+    -ci: 'ci' or 'full' (check_variant reads it back)."""
+    return "ci" if ci else "full"
+
+
 def check_variant(setup, ci, who="prepare.py --continue"):
     """A continued run's -ci must be the run's own: SETUP (the set-up
     prepare.py wrote when the run started) says 'variant ci;' or 'variant
@@ -109,7 +115,7 @@ def check_variant(setup, ci, who="prepare.py --continue"):
         own = foam_entry(setup, "variant")
     except (IOError, OSError, KeyError):
         return
-    if own != ("ci" if ci else "full"):
+    if own != variant(ci):
         sys.exit("%s: the run was set up %s the CI variant (%s): continue it %s -ci"
                  % (who, "as" if own == "ci" else "without", setup,
                     "with" if own == "ci" else "without"))

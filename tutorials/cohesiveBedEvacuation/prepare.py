@@ -289,7 +289,7 @@ def main():
     dt = dt_cfd / nc
     with open("DEM/post/setupDict", "w") as f:
         f.write("// written by prepare.py from %s%s\n" % (PROPS, " (ci)" if args.ci else ""))
-        f.write("variant %s;\n" % ("ci" if args.ci else "full"))
+        f.write("variant %s;\n" % caseio.variant(args.ci))
         f.write("xMin %.9g;\nyMin %.9g;\nzMin %.9g;\n" % tuple(lo))
         f.write("xMax %.9g;\nyMax %.9g;\nzMax %.9g;\n" % tuple(hi))
         f.write("nx %d;\nny %d;\nnz %d;\n" % tuple(ncell))

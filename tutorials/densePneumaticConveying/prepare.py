@@ -120,7 +120,6 @@ def main():
     ap.add_argument("--end", type=float, default=None)
     args = ap.parse_args()
     case = args.case
-    variant = "ci" if args.ci else "full"
     if not args.cont:
         caseio.refuse_new_run(case, ("DEM/post/packed.restart", "DEM/post/history_*.dat",
                                      "DEM/post/dump/*"))
@@ -281,7 +280,7 @@ def main():
         f.write("%-14s %d;\n" % ("nSquare", int(par["nSquare"])))
         f.write("%-14s %d;\n" % ("nRadial", int(par["nRadial"])))
         f.write("%-14s %d;\n" % ("nx", nx))
-        f.write("%-14s %s;\n" % ("variant", variant))
+        f.write("%-14s %s;\n" % ("variant", caseio.variant(args.ci)))
         f.write("%-14s %s;\n" % ("startTime", start_time))
         f.write("%-14s %.12g;\n" % ("endTime", t_stop))
         f.write("%-14s %.12g;\n" % ("writeInterval", p("writeInterval")))

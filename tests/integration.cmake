@@ -72,6 +72,18 @@ add_test(NAME tutorials.allcleanRestores
 set_tests_properties(tutorials.allcleanRestores PROPERTIES
     LABELS "integration;tutorial" TIMEOUT 600)
 
+# etc/RunFunctions' foamDEMSetEntry on a scratch dictionary: sets a
+# top-level 'KEY VALUE;' line's value only (a trailing comment holding a
+# ';' kept; a longer key and the key in a sub-dictionary left alone; sed's
+# special characters and a leading '-' written as given), and refuses a key
+# with no line or no value. Seen failing with the setter of 2ae5696 (its
+# greedy '.*;' ate the comment up to its last ';')
+add_test(NAME tutorials.runFunctions.setEntry
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkSetEntry
+            ${FOAMDEM_WORK}/setEntry)
+set_tests_properties(tutorials.runFunctions.setEntry PROPERTIES
+    LABELS "integration;tutorial" TIMEOUT 60)
+
 # Bad input in a DEM-only stage (foamDEMLiggghts, the tutorials' packing):
 # the LIGGGHTS error and the failing command on stderr and in the log,
 # non-zero exit, every rank stopped

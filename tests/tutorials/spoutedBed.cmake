@@ -153,7 +153,10 @@ set_tests_properties(parallel.spoutedBed.clumps.fillContinue PROPERTIES
 # the variant), the tutorial's checks pass (no body lost, mass constant,
 # schedule, probe rate, analysis), and at every coupling step the force on
 # the particles equals minus the fluid's momentum source to 1e-10 (the
-# lift's reaction included; measured 1.2e-15, 2026-12-07). 169 s
+# lift's reaction included; measured 1.2e-15, 2026-12-07). 169 s. Seen
+# failing with the fluid's share of the coupled force halved in
+# implicitCoupling.C: worst mismatch 0.037 over 1 884 coupling steps
+# (2026-12-07)
 set(SPOUTED_VARIANT ${FOAMDEM_WORK}/spoutedBed_liftTorque)
 add_test(NAME parallel.spoutedBed.clumps.liftTorque
     COMMAND sh -c "${CMAKE_CURRENT_SOURCE_DIR}/integration/runVariant spoutedBed ${SPOUTED_VARIANT} true -ci -np 2 -representation clumps -fraction 0.01 -lift on -torque on && ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkForceModels ${SPOUTED_VARIANT}/log.pisoDEMFoam hoelzerSommerfeld saffmanMeiLift magnusLift pitchingTorque rotationalDrag && ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkMomentumBalance ${SPOUTED_VARIANT}/log.pisoDEMFoam 1e-10")

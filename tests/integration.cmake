@@ -49,6 +49,14 @@ endforeach()
 # and a new run on a case that has run (seen failing with a2a8a0b's
 # settlingSphere Allrun, 4 failures: it set -ci's endTime in controlDict and
 # went on to the run, whose steps runApplication then skipped as run)
+# -continue when the latest write has no DEM restart (the six short
+# tutorials and cohesiveBedEvacuation): refused before anything is written,
+# naming the write and how to remove it (seen failing with bd716ad's
+# scripts: settlingSphere's -ci -continue wrote controlDict first, and no
+# message named the write)
+# spoutedBed's -ci -continue on a full run (its particle table's header):
+# refused (seen failing with prepare.py's variant check left out: the
+# set-up was rewritten for the CI bed)
 foreach(tut spoutedBed densePneumaticConveying cohesiveBedEvacuation
         ErgunPackedBed fluidizedBed liquidFluidizedBed mixedBedNonSpherical
         settlingNonSpherical settlingSphere)
@@ -59,13 +67,17 @@ foreach(tut spoutedBed densePneumaticConveying cohesiveBedEvacuation
 endforeach()
 
 # ./Allclean puts back the files an Allrun option edited (-ci, -drag, -dt,
-# -ddt: foamDEMEdit, foamDEMRestoreOriginals) and keeps a file changed by
-# hand since (checkAllcleanRestores: settlingSphere and ErgunPackedBed CI
-# runs, a continuation, two changes by hand, the other Allcleans). Seen
+# -ddt, -np, startFrom, -lift's forceModels: foamDEMEdit,
+# foamDEMRestoreOriginals) and keeps a file changed by hand since
+# (checkAllcleanRestores: settlingSphere and ErgunPackedBed CI runs, a
+# continuation, three changes by hand, the other Allcleans). Seen
 # failing with the scripts of 202ab58 (Allclean left 2 and 4 edited files:
 # a later ./Allrun ran with the earlier -drag and -ci endTime), with
 # foamDEMContinue's startFrom set by plain sed, with foamDEMEdit taking
-# over a change by hand, and with fluidizedBed's Allclean not restoring
+# over a change by hand, with fluidizedBed's Allclean not restoring, and
+# with the Allcleans of bd716ad (3 failures: densePneumaticConveying's and
+# spoutedBed's left controlDict edited and the .orig files; spoutedBed's
+# reset a change by hand of forceModels)
 add_test(NAME tutorials.allcleanRestores
     COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkAllcleanRestores
             ${FOAMDEM_WORK}/allcleanRestores)

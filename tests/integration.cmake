@@ -76,20 +76,32 @@ endforeach()
 # foamDEMContinue's startFrom set by plain sed, with foamDEMEdit taking
 # over a change by hand, with fluidizedBed's Allclean not restoring, and
 # with the Allcleans of bd716ad (3 failures: densePneumaticConveying's and
-# spoutedBed's left controlDict edited and the .orig files; spoutedBed's
-# reset a change by hand of forceModels)
+# spoutedBed's left the .orig of their -np and -lift edits; spoutedBed's
+# reset a change by hand of forceModels, keeping no .tutorial)
 add_test(NAME tutorials.allcleanRestores
     COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkAllcleanRestores
             ${FOAMDEM_WORK}/allcleanRestores)
 set_tests_properties(tutorials.allcleanRestores PROPERTIES
     LABELS "integration;tutorial" TIMEOUT 600)
 
+# Every edit an Allrun makes to a tutorial's own file (system/, constant/,
+# DEM/ but DEM/post/) goes through foamDEMEdit, so that Allclean can put
+# it back (checkAllrunEdits, a static check of the nine Allrun: 20 edits
+# found). Seen failing with the Allrun of bd716ad (5 bare edits in
+# spoutedBed, densePneumaticConveying and cohesiveBedEvacuation)
+add_test(NAME tutorials.allrunEdits
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkAllrunEdits)
+set_tests_properties(tutorials.allrunEdits PROPERTIES
+    LABELS "integration;tutorial" TIMEOUT 60)
+
 # etc/RunFunctions' foamDEMSetEntry on a scratch dictionary: sets a
 # top-level 'KEY VALUE;' line's value only (a trailing comment holding a
 # ';' kept; a longer key and the key in a sub-dictionary left alone; sed's
 # special characters and a leading '-' written as given), and refuses a key
-# with no line or no value. Seen failing with the setter of 2ae5696 (its
-# greedy '.*;' ate the comment up to its last ';')
+# with no line or no value, a value holding a ';' and a line whose value
+# it cannot match. Seen failing with the setter of 2ae5696 (its greedy
+# '.*;' ate the comment up to its last ';') and with that of 163e1b2 (a
+# ';' value written, the unmatched line taken as set from its comment)
 add_test(NAME tutorials.runFunctions.setEntry
     COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkSetEntry
             ${FOAMDEM_WORK}/setEntry)

@@ -94,6 +94,28 @@ add_test(NAME tutorials.allrunEdits
 set_tests_properties(tutorials.allrunEdits PROPERTIES
     LABELS "integration;tutorial" TIMEOUT 60)
 
+# Every coupled run in an Allrun is followed by 'foamDEMStoppedEarly &&
+# exit 0' before its post-processing, so that a run stopped by SIGUSR2
+# (stopSignals.H) ends the Allrun unprocessed, status 0
+# (checkAllrunStops, static: 25 coupled runs in the nine Allrun). Seen
+# failing with the Allrun of 0209a0d (all 25)
+add_test(NAME tutorials.allrunStops
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkAllrunStops)
+set_tests_properties(tutorials.allrunStops PROPERTIES
+    LABELS "integration;tutorial" TIMEOUT 60)
+
+# doc/cluster.md's SLURM batch script under a stand-in for SLURM
+# (checkJobScript): job 1 (settlingSphere, np 2) gets SIGUSR2 as
+# --signal=B:USR2 sends it, passes it to its pisoDEMFoam
+# (foamDEMSignalRun), exits 0 unprocessed and submits job.slurm once;
+# job 2 continues to the end, post-processes ('pass yes') and submits
+# nothing.
+add_test(NAME cluster.jobScript
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkJobScript
+            ${FOAMDEM_WORK}/jobScript)
+set_tests_properties(cluster.jobScript PROPERTIES
+    LABELS "integration;tutorial;parallel" TIMEOUT 600 PROCESSORS 2)
+
 # etc/RunFunctions' foamDEMSetEntry on a scratch dictionary: sets a
 # top-level 'KEY VALUE;' line's value only (a trailing comment holding a
 # ';' kept; a longer key and the key in a sub-dictionary left alone; sed's

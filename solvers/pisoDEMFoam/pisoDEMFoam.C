@@ -32,6 +32,10 @@ Description
     inlet. For an interstitial inflow give the inlet zeroGradient in
     0/voidfraction (the stability guard reports the superficial flow).
 
+    Signals: SIGUSR1 writes the current step (fields and DEM restart),
+    SIGUSR2 writes it and stops, e.g. before a wall-time limit; one rank
+    is enough (foamDEM::stopSignals).
+
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
@@ -42,6 +46,7 @@ Description
 #include "demCoupling.H"
 #include "cellReconstruct.H"
 #include "writeAtEndTime.H"
+#include "stopSignals.H"
 #include "sigFpe.H"
 
 typedef Foam::PhaseIncompressibleTurbulenceModel
@@ -56,6 +61,10 @@ int main(int argc, char *argv[])
         "Incompressible PISO solver with void fraction, coupled in-process"
         " to the DEM through foamDEM."
     );
+
+    // SIGUSR1: write this step; SIGUSR2: write it and stop (a wall-time
+    // limit). Before MPI starts its threads (stopSignals.H)
+    foamDEM::stopSignals stopSignals;
 
     #include "setRootCase.H"
 
@@ -77,6 +86,7 @@ int main(int argc, char *argv[])
     {
         // the last step is written, also off the write grid (continuable)
         foamDEM::writeAtEndTime(runTime);
+        stopSignals.check(runTime);
         ++runTime;
         Info<< "Time = " << runTime.timeName() << nl << endl;
 

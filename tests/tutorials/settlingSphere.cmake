@@ -209,6 +209,22 @@ set_tests_properties(continuation.settlingSphere.np1 PROPERTIES
 set_tests_properties(continuation.settlingSphere.np2 PROPERTIES
     LABELS "integration;tutorial;parallel" TIMEOUT 300 PROCESSORS 2)
 
+# Stop signals (stopSignals.H, foamDEMStoppedEarly): settlingSphere -ci
+# gets SIGUSR1 past 0.05 s (writes, goes on) and SIGUSR2 past 0.1 s
+# (writes, stops; on np 2 sent to rank 1 only); Allrun exits 0 without
+# post-processing, both writes have their DEM restart, and ./Allrun -ci
+# -continue from the stop agrees with the run straight through to 1e-12
+# at 0.25 s.
+set(STOPSIGNAL ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkStopSignal)
+add_test(NAME continuation.stopSignal.np1
+    COMMAND ${STOPSIGNAL} ${FOAMDEM_WORK}/stopSignal_np1 1)
+add_test(NAME continuation.stopSignal.np2
+    COMMAND ${STOPSIGNAL} ${FOAMDEM_WORK}/stopSignal_np2 2)
+set_tests_properties(continuation.stopSignal.np1 PROPERTIES
+    LABELS "integration;tutorial" TIMEOUT 300)
+set_tests_properties(continuation.stopSignal.np2 PROPERTIES
+    LABELS "integration;tutorial;parallel" TIMEOUT 300 PROCESSORS 2)
+
 # The restart's periodic wrap: a sphere that crossed a periodic boundary
 # since LIGGGHTS last built its neighbour list is outside the box at the
 # write; the file must hold it wrapped, or read_restart drops it

@@ -29,6 +29,7 @@ Foam::foamDEM::runProgress::runProgress
     started_(created_),
     isStarted_(false),
     t0_(runTime.value()),
+    endTime_(runTime.endTime().value()),
     steps_(0),
     lastWall_(0),
     lastT_(runTime.value())
@@ -89,7 +90,8 @@ void Foam::foamDEM::runProgress::print
     const scalar t = withRecent
         ? runTime_.value() - runTime_.deltaTValue() : runTime_.value();
     const scalar wall = seconds(started_);
-    const scalar tEnd = runTime_.endTime().value();
+    // The case's endTime (a stop signal sets the Time's to the stop)
+    const scalar tEnd = endTime_;
     const estimate e = estimateOf(t0_, t, tEnd, wall);
     const scalar cfd = max(wall - s.dem - s.coupling - s.output, scalar(0));
 
@@ -144,4 +146,17 @@ void Foam::foamDEM::runProgress::summary(const split& s)
         << minutes(std::chrono::duration<double>(started_ - created_).count()).c_str()
         << "; ";
     print("", s, false);
+    const scalar t = runTime_.value();
+    if (t < endTime_ - 0.5*runTime_.deltaTValue())
+    {
+        // A stop signal (SIGUSR2; stopSignals.H) or a stopAt
+        // of the controlDict: say whether this step was written (its
+        // fields, and its DEM restart with writeDEMRestart)
+        Info<< "foamDEM run: stopped at t = " << t << " s, before endTime "
+            << endTime_ << " s; "
+            << (runTime_.writeTime() ? "written at " : "not written at ")
+            << runTime_.timeName() << ": continue from the latest write"
+            << " (startFrom latestTime; a tutorial's ./Allrun -continue)"
+            << endl;
+    }
 }

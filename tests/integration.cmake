@@ -105,11 +105,14 @@ set_tests_properties(tutorials.allrunStops PROPERTIES
     LABELS "integration;tutorial" TIMEOUT 60)
 
 # doc/cluster.md's SLURM batch script under a stand-in for SLURM
-# (checkJobScript): job 1 (settlingSphere, np 2) gets SIGUSR2 as
-# --signal=B:USR2 sends it, passes it to its pisoDEMFoam
-# (foamDEMSignalRun), exits 0 unprocessed and submits job.slurm once;
-# job 2 continues to the end, post-processes ('pass yes') and submits
-# nothing.
+# (checkJobScript): job 1 (settlingSphere, np 2), its ranks frozen once
+# they have blocked the signals, gets SIGUSR2 as --signal=B:USR2 sends
+# it, passes it to its pisoDEMFoam (foamDEMSignalRun), exits 0
+# unprocessed and submits job.slurm once; job 2 continues to the end,
+# post-processes ('pass yes') and submits nothing. Seen failing with the
+# solver's stopSignals.check() taken out (job 1 ran to its end), and,
+# with OpenFOAM's own signal handlers instead, with a late SIGUSR2
+# crashing rank 1 in MPI_Finalize.
 add_test(NAME cluster.jobScript
     COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkJobScript
             ${FOAMDEM_WORK}/jobScript)

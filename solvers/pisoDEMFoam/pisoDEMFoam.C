@@ -32,9 +32,9 @@ Description
     inlet. For an interstitial inflow give the inlet zeroGradient in
     0/voidfraction (the stability guard reports the superficial flow).
 
-    Signals: SIGUSR1 writes the current step (fields and DEM restart),
-    SIGUSR2 writes it and stops, e.g. before a wall-time limit; one rank
-    is enough (foamDEM::stopSignals).
+    Signals: SIGUSR1 writes the coming time step (fields and DEM
+    restart), SIGUSR2 writes it and stops, e.g. before a wall-time limit;
+    one rank is enough (foamDEM::stopSignals).
 
 \*---------------------------------------------------------------------------*/
 
@@ -62,8 +62,8 @@ int main(int argc, char *argv[])
         " to the DEM through foamDEM."
     );
 
-    // SIGUSR1: write this step; SIGUSR2: write it and stop (a wall-time
-    // limit). Before MPI starts its threads (stopSignals.H)
+    // SIGUSR1: write the coming step; SIGUSR2: write it and stop (a
+    // wall-time limit). Before MPI starts its threads (stopSignals.H)
     foamDEM::stopSignals stopSignals;
 
     #include "setRootCase.H"

@@ -199,31 +199,31 @@ set_tests_properties(settlingSphere.terminalVelocity PROPERTIES
 # restart. Seen failing: without the held forces put back, positions
 # 1.3e-9 and velocities 5.4e-8 off; with the coupling terms pushed anew
 # from the restart time's fluid, 3.2e-11 and 2.2e-10
+# NAME.np1 and NAME.np2: SCRIPT WORK/<work>_np1 1 and WORK/<work>_np2 2
+function(foamdem_np12_tests name script work)
+    add_test(NAME ${name}.np1 COMMAND ${script} ${FOAMDEM_WORK}/${work}_np1 1)
+    add_test(NAME ${name}.np2 COMMAND ${script} ${FOAMDEM_WORK}/${work}_np2 2)
+    set_tests_properties(${name}.np1 PROPERTIES
+        LABELS "integration;tutorial" TIMEOUT 300)
+    set_tests_properties(${name}.np2 PROPERTIES
+        LABELS "integration;tutorial;parallel" TIMEOUT 300 PROCESSORS 2)
+endfunction()
+
 set(CONTINUATION ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkContinuation)
-add_test(NAME continuation.settlingSphere.np1
-    COMMAND ${CONTINUATION} ${FOAMDEM_WORK}/continuation_np1 1)
-add_test(NAME continuation.settlingSphere.np2
-    COMMAND ${CONTINUATION} ${FOAMDEM_WORK}/continuation_np2 2)
-set_tests_properties(continuation.settlingSphere.np1 PROPERTIES
-    LABELS "integration;tutorial" TIMEOUT 300)
-set_tests_properties(continuation.settlingSphere.np2 PROPERTIES
-    LABELS "integration;tutorial;parallel" TIMEOUT 300 PROCESSORS 2)
+foamdem_np12_tests(continuation.settlingSphere ${CONTINUATION} continuation)
 
 # Stop signals (stopSignals.H, foamDEMStoppedEarly): settlingSphere -ci
-# gets SIGUSR1 past 0.05 s (writes, goes on) and SIGUSR2 past 0.1 s
-# (writes, stops; on np 2 sent to rank 1 only); Allrun exits 0 without
+# gets SIGUSR1 at its 0.05 s write (writes, goes on) and SIGUSR2 at its
+# 0.1 s write (writes, stops; on np 2 sent to rank 1 only), then SIGUSR2
+# to every rank every 20 ms until they end; Allrun exits 0 without
 # post-processing, both writes have their DEM restart, and ./Allrun -ci
 # -continue from the stop agrees with the run straight through to 1e-12
-# at 0.25 s.
-set(STOPSIGNAL ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkStopSignal)
-add_test(NAME continuation.stopSignal.np1
-    COMMAND ${STOPSIGNAL} ${FOAMDEM_WORK}/stopSignal_np1 1)
-add_test(NAME continuation.stopSignal.np2
-    COMMAND ${STOPSIGNAL} ${FOAMDEM_WORK}/stopSignal_np2 2)
-set_tests_properties(continuation.stopSignal.np1 PROPERTIES
-    LABELS "integration;tutorial" TIMEOUT 300)
-set_tests_properties(continuation.stopSignal.np2 PROPERTIES
-    LABELS "integration;tutorial;parallel" TIMEOUT 300 PROCESSORS 2)
+# at 0.25 s (measured: bitwise). Seen failing with the solver's
+# stopSignals.check() taken out (no stop), and with settlingSphere's
+# 'foamDEMStoppedEarly && exit 0' taken out (validate.py ran on the
+# part-run, and passed)
+foamdem_np12_tests(continuation.stopSignal
+    ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkStopSignal stopSignal)
 
 # The restart's periodic wrap: a sphere that crossed a periodic boundary
 # since LIGGGHTS last built its neighbour list is outside the box at the

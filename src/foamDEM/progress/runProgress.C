@@ -1,4 +1,5 @@
 #include "runProgress.H"
+#include "stopSignals.H"
 
 Foam::foamDEM::runProgress::estimate
 Foam::foamDEM::runProgress::estimateOf
@@ -146,16 +147,17 @@ void Foam::foamDEM::runProgress::summary(const split& s)
         << minutes(std::chrono::duration<double>(started_ - created_).count()).c_str()
         << "; ";
     print("", s, false);
-    const scalar t = runTime_.value();
-    if (t < endTime_ - 0.5*runTime_.deltaTValue())
+    if
+    (
+        stopSignals::stopped()
+     && runTime_.value() < endTime_ - 0.5*runTime_.deltaTValue()
+    )
     {
-        // A stop signal (SIGUSR2; stopSignals.H) or a stopAt
-        // of the controlDict: say whether this step was written (its
-        // fields, and its DEM restart with writeDEMRestart)
-        Info<< "foamDEM run: stopped at t = " << t << " s, before endTime "
-            << endTime_ << " s; "
-            << (runTime_.writeTime() ? "written at " : "not written at ")
-            << runTime_.timeName() << ": continue from the latest write"
+        // The run's last step, written, by a SIGUSR2 (stopSignals.H), not
+        // the case's last anyway
+        Info<< "foamDEM run: stopped by SIGUSR2 at t = " << runTime_.value()
+            << " s, before endTime " << endTime_ << " s; written at "
+            << runTime_.timeName() << ": continue from that write"
             << " (startFrom latestTime; a tutorial's ./Allrun -continue)"
             << endl;
     }

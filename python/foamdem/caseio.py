@@ -49,6 +49,21 @@ def liggghts_variables(path):
     return out
 
 
+def stopped_by_signal(log):
+    """The line "foamDEM run: stopped by SIGUSR2 at t = ..." of a solver
+    log (a run a SIGUSR2 stopped before its endTime: stopSignals.H), or
+    None. A driver that runs pisoDEMFoam itself must not take such a run,
+    which ends with status 0, for a finished one."""
+    try:
+        with open(log) as f:
+            for line in f:
+                if line.startswith("foamDEM run: stopped by SIGUSR2 at t = "):
+                    return line.strip()
+    except OSError:
+        pass
+    return None
+
+
 def time_dirs(case):
     """Numeric time directories of a case, sorted (none if CASE is not a
     directory)."""

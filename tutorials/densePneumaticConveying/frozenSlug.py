@@ -137,6 +137,9 @@ def frozen(work, packed, name, edit, interval, end):
     run(["checkMesh"], case, "log.checkMesh")
     t0 = time.time()
     run(["pisoDEMFoam"], case, "log.pisoDEMFoam")
+    stopped = caseio.stopped_by_signal(os.path.join(case, "log.pisoDEMFoam"))
+    if stopped:
+        sys.exit("frozenSlug.py: %s in %s: run it again" % (stopped, case))
     with open(os.path.join(case, "done"), "w") as f:
         f.write("%.0f\n" % (time.time() - t0))
     return case

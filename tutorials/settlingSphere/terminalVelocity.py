@@ -316,6 +316,11 @@ def main():
                 failures.append("%s %s: pisoDEMFoam exit %d (%s/log.pisoDEMFoam)"
                                 % (law, name, status, work))
                 continue
+            stopped = caseio.stopped_by_signal(os.path.join(work, "log.pisoDEMFoam"))
+            if stopped:
+                failures.append("%s %s: %s (%s/log.pisoDEMFoam): not analysed"
+                                % (law, name, stopped, work))
+                continue
             r = analyse(work, law, nu, g)
             rows.append((law, name, nu, r, wall))
             print("    Re_t %.3f, U_t %.6g m/s; Brown & Lawler %.6g (%+.2f %%), "

@@ -63,7 +63,10 @@ set_tests_properties(python.realisationSetup PROPERTIES LABELS "unit;python" TIM
 # time 0 and the latest write of every processor, the solver's DEM restart
 # and step file of that time only, the first and newest dump, the two
 # newest script restarts and the logs, and unpacks to the same files
-# (fails with every DEM/restart/<time>.restart packed)
+# (fails with every DEM/restart/<time>.restart packed); with --bodies the
+# restarts that have their bodies' states beside them are left out, and a
+# stale bodies' file or a latest write without one is refused (fails with
+# no restart left out: 2 checks)
 add_test(NAME python.archiveRun
     COMMAND sh -c "\"\${FOAMDEM_PYTHON:-python3}\" ${CMAKE_CURRENT_LIST_DIR}/testArchiveRun.py")
 set_tests_properties(python.archiveRun PROPERTIES LABELS "unit;python" TIMEOUT 60)

@@ -3,7 +3,10 @@
 case: what a continuation needs is in the archive and nothing else (time
 directories 0 and the latest in every processor, the solver's DEM restart
 and step file of the latest time only, the first and the newest dump, the
-two newest script restarts, the logs), and unpack gives it back."""
+two newest script restarts, the logs), and unpack gives it back; with
+--bodies, the restarts that have their bodies' states beside them are left
+out (and LIGGGHTS's own), a bodies' file older than its restart and a
+latest write without one are refused."""
 import os
 import subprocess
 import sys
@@ -55,4 +58,42 @@ r = subprocess.run([sys.executable, tool, "unpack", archive, out],
 print(r.stdout.strip())
 check("unpack gives the files back",
       r.returncode == 0 and all(open(os.path.join(out, f)).read() == f for f in want))
+
+# --bodies: a restart with its bodies' states beside it is carried by them
+for f in ("DEM/restart/1.5.bodies", "DEM/post/filled.restart", "DEM/post/filled.bodies",
+          "DEM/post/fill.restart"):
+    open(os.path.join(case, f), "w").write(f)
+archive = os.path.join(tmp, "bodies.tar.xz")
+r = subprocess.run([sys.executable, tool, "pack", case, archive, "--bodies"],
+                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+print(r.stdout.strip())
+check("pack --bodies exits 0", r.returncode == 0)
+with tarfile.open(archive) as tar:
+    names = set(tar.getnames())
+want = {"DEM/restart/1.5.bodies", "DEM/restart/1.5.step", "DEM/post/filled.bodies",
+        "DEM/post/fill.restart", "processor0/1.5/U", "log.pisoDEMFoam"}
+check("--bodies: the bodies' states, the step, a restart without bodies and the rest",
+      want <= names, str(sorted(want - names)))
+unwanted = {"DEM/restart/1.5.restart", "DEM/post/filled.restart",
+            "DEM/post/restart/rebuild.200.restart", "DEM/post/restart/rebuild.300.restart"}
+check("--bodies: not the restarts the bodies carry, nor LIGGGHTS's own",
+      not (unwanted & names), str(sorted(unwanted & names)))
+check("--bodies: the restart kept is named", "DEM/post/fill.restart kept" in r.stdout)
+
+# a bodies' file older than its restart (a fill that went on) is refused
+os.utime(os.path.join(case, "DEM/post/filled.bodies"), (1e9, 1e9))
+r = subprocess.run([sys.executable, tool, "pack", case, archive, "--bodies"],
+                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+print(r.stdout.strip())
+check("--bodies refuses bodies older than their restart",
+      r.returncode != 0 and "filled.bodies is older than" in r.stdout)
+os.utime(os.path.join(case, "DEM/post/filled.bodies"))
+
+# and a latest write without them
+os.remove(os.path.join(case, "DEM/restart/1.5.bodies"))
+r = subprocess.run([sys.executable, tool, "pack", case, archive, "--bodies"],
+                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+print(r.stdout.strip())
+check("--bodies refuses a latest write without its bodies' states",
+      r.returncode != 0 and "has no bodies' states" in r.stdout)
 finish()

@@ -128,6 +128,30 @@ set_tests_properties(parallel.spoutedBed.clumps.continue PROPERTIES
     LABELS "integration;tutorial;parallel" TIMEOUT 900 PROCESSORS 2
     FIXTURES_REQUIRED spoutedBed_clumps)
 
+# A fidelity run carried to another machine as its bodies' states (its
+# LIGGGHTS restarts are about 300 MB a write; multisphereBodies.H): the
+# clumps run above, its writes after 0.2 s removed, packed by
+# foamDEMArchiveRun pack --bodies (DEM/restart/0.2.restart left out,
+# 0.2.bodies kept) and unpacked; ./Allrun -continue rebuilds
+# DEM/restart/0.2.restart from 0.2.bodies on one process (the bodies
+# inserted again type by type, set from the file) and continues at np 2.
+# The dump the continued run writes at its first step holds the straight
+# run's 8 500 spheres at 0.2 s (as sets: IDs are new) to the dump's six
+# significant digits (1e-6 m; measured 0, 2026-12-07), and 0.01 s later
+# the 100 Hz row agrees with the straight run's to 1e-4 relative (measured:
+# count and mass equal, highest sphere 5.9e-7: the rebuilt state has no
+# contact history; the full restart's continuation above gives 6.2e-12);
+# the tutorial's checks pass over both segments.
+add_test(NAME parallel.spoutedBed.clumps.bodies
+    COMMAND ${CONTINUATION_TUT} ${FOAMDEM_WORK}/spoutedBed_clumps
+            ${FOAMDEM_WORK}/spoutedBed_clumps_bodies 0.2 --bodies
+            --same-spheres DEM/post/dump/snap.{step}.txt:1e-6
+            --history DEM/post/height.dat:0.209984667056107:1e-4
+            -- -ci -np 2)
+set_tests_properties(parallel.spoutedBed.clumps.bodies PROPERTIES
+    LABELS "integration;tutorial;parallel" TIMEOUT 900 PROCESSORS 2
+    FIXTURES_REQUIRED spoutedBed_clumps)
+
 # A fill stopped by a kill and continued (the full-bed fidelity fill takes
 # longer than a session): the clumps run above, its fill started again,
 # killed (process group, SIGKILL) once it has written its first restart
@@ -143,6 +167,27 @@ add_test(NAME parallel.spoutedBed.clumps.fillContinue
             ${FOAMDEM_WORK}/spoutedBed_clumps ${FOAMDEM_WORK}/spoutedBed_clumps_fill
             -- -ci -np 2 -representation clumps -fraction 0.01)
 set_tests_properties(parallel.spoutedBed.clumps.fillContinue PROPERTIES
+    LABELS "integration;tutorial;parallel" TIMEOUT 900 PROCESSORS 2
+    FIXTURES_REQUIRED spoutedBed_clumps)
+
+# The same fill carried to another machine while it settles (the
+# full-bed fidelity fill takes 2.4-4.3 h, more than a session): killed
+# after its first restart, ./Allrun -fillBodies writes that restart's
+# bodies' states, foamDEMArchiveRun pack --bodies leaves the restart out,
+# and ./Allrun -continue after unpack rebuilds DEM/post/fill.restart from
+# DEM/post/fill.bodies, continues the fill at np 2 and runs the coupled
+# stage and its checks. The first thermo row after the restart (303 steps
+# on: spheres, kinetic energy, highest centre) agrees with the straight
+# fill's to 1e-3 relative (measured 0, 1.2e-5 and 0, 2026-12-07); the end
+# of the fill is another realisation (no contact history; highest centre
+# 12.8 against 23.8 mm), printed only. Seen failing with the bodies'
+# centres of mass not set from the file (the row 7.8e-2 off)
+add_test(NAME parallel.spoutedBed.clumps.fillBodies
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/integration/checkFillContinuation
+            ${FOAMDEM_WORK}/spoutedBed_clumps ${FOAMDEM_WORK}/spoutedBed_clumps_fillBodies
+            --bodies --rtol 1e-3
+            -- -ci -np 2 -representation clumps -fraction 0.01)
+set_tests_properties(parallel.spoutedBed.clumps.fillBodies PROPERTIES
     LABELS "integration;tutorial;parallel" TIMEOUT 900 PROCESSORS 2
     FIXTURES_REQUIRED spoutedBed_clumps)
 

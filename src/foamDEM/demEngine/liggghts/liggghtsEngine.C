@@ -33,6 +33,8 @@
 #include "vector_container.h"
 
 #include "liftTorqueCorrelations.H"
+#include "multisphereBodies.H"
+#include <stdexcept>
 
 namespace Foam
 {
@@ -1285,6 +1287,27 @@ void Foam::foamDEM::liggghtsEngine::writeRestart(const fileName& file)
         Info<< "DEM restart " << file.name() << ": " << nWrapped
             << " atom(s) past a periodic boundary written wrapped into the"
             << " box" << endl;
+    }
+
+    // With bodies, their states beside it (multisphereBodies.H): a few MB
+    // that rebuild the restart's spheres on another machine (not in a
+    // periodic domain, whose images they do not carry)
+    if
+    (
+        multisphere_
+     && !domain.xperiodic && !domain.yperiodic && !domain.zperiodic
+    )
+    {
+        try
+        {
+            writeBodyStates(*lmp_, *multisphere_, bodyStateFile(file));
+        }
+        catch (const std::exception& e)
+        {
+            FatalErrorInFunction
+                << "Writing the bodies' states beside the DEM restart " << file
+                << ": " << e.what() << exit(FatalError);
+        }
     }
 
     // With bodies the next run sets up again, so that a run continued from

@@ -16,6 +16,11 @@
 #include "input.h"
 #include "universe.h"
 #include "variable.h"
+#include "modify.h"
+#include "fix_multisphere.h"
+#include "multisphereBodies.H"
+#include "update.h"
+#include <stdexcept>
 
 namespace
 {
@@ -271,8 +276,110 @@ namespace
     const char* usage =
         "Usage: foamDEMLiggghts -in SCRIPT [-log FILE|none] [-screen FILE|none]\n"
         "           [-var NAME VALUE...]... [-echo none|screen|log|both]\n"
+        "           [-writeBodies FILE] [-readBodies FILE -restartOut FILE]\n"
         "Runs a LIGGGHTS input script (a DEM-only stage) on the ranks mpirun\n"
-        "gives it; LIGGGHTS errors reach stderr and the log file.\n";
+        "gives it; LIGGGHTS errors reach stderr and the log file.\n"
+        "After the script: -writeBodies writes the multisphere bodies' states\n"
+        "(multisphereBodies.H); -readBodies (one process) sets the bodies the\n"
+        "script made from such a file, sets up, takes the file's step and\n"
+        "writes the LIGGGHTS restart -restartOut.\n";
+
+
+    // A line to LIGGGHTS's screen and log (rank 0)
+    void say(const std::string& line)
+    {
+        if (rank != 0) return;
+        for (FILE* f : {lmp->screen, lmp->logfile})
+        {
+            if (f)
+            {
+                std::fprintf(f, "%s\n", line.c_str());
+                std::fflush(f);
+            }
+        }
+    }
+
+
+    // After the script: the bodies' states written, or read and written
+    // into a restart. Errors end every rank.
+    void bodyStates
+    (
+        const std::string& writeFile,
+        const std::string& readFile,
+        const std::string& restartOut
+    )
+    {
+        if (writeFile.empty() && readFile.empty()) return;
+        std::string what;
+        try
+        {
+            auto* ms = dynamic_cast<LAMMPS_NS::FixMultisphere*>
+            (
+                lmp->modify->find_fix_style("multisphere", 0)
+            );
+            if (!ms)
+            {
+                throw std::runtime_error
+                (
+                    "the script defines no fix multisphere: no bodies to "
+                  + std::string(readFile.empty() ? "write" : "set")
+                );
+            }
+            if (!readFile.empty())
+            {
+                what = "setting the bodies from " + readFile;
+                const long step = Foam::foamDEM::readBodyStates(*lmp, *ms, readFile);
+                const std::string part(restartOut + ".part");
+                for
+                (
+                    const std::string& cmd :
+                    {
+                        std::string("run 0 post no"),
+                        "reset_timestep " + std::to_string(step),
+                        "write_restart " + part
+                    }
+                )
+                {
+                    lmp->input->one(cmd.c_str());
+                }
+                if (rank == 0 && std::rename(part.c_str(), restartOut.c_str()))
+                {
+                    throw std::runtime_error("cannot rename " + part);
+                }
+                say
+                (
+                    "BODIES: " + std::to_string(ms->n_body_all()) + " set from "
+                  + readFile + ", step " + std::to_string(step) + "; restart "
+                  + restartOut
+                );
+            }
+            if (!writeFile.empty())
+            {
+                what = "writing the bodies to " + writeFile;
+                const long n = Foam::foamDEM::writeBodyStates(*lmp, *ms, writeFile);
+                say
+                (
+                    "BODIES: " + std::to_string(n) + " written to " + writeFile
+                  + ", step " + std::to_string(lmp->update->ntimestep)
+                );
+            }
+        }
+        catch (const std::exception& e)
+        {
+            const std::string report
+            (
+                "\n--> foamDEM FATAL ERROR: foamDEMLiggghts: " + what
+              + (what.empty() ? "" : ": ") + e.what() + "\n"
+            );
+            std::fputs(report.c_str(), stderr);
+            if (rank == 0 && lmp->logfile)
+            {
+                std::fputs(report.c_str(), lmp->logfile);
+                std::fflush(lmp->logfile);
+            }
+            MPI_Abort(MPI_COMM_WORLD, 1);
+        }
+    }
 }
 
 
@@ -282,7 +389,7 @@ int Foam::foamDEM::runLiggghtsScript(int argc, char* argv[])
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
 
     // Arguments, as the liggghts executable takes them
-    std::string screen, echo;
+    std::string screen, echo, writeBodies, readBodies, restartOut;
     bool hasScreen = false;
     logPath = "log.liggghts";
     std::vector<std::vector<std::string>> vars;
@@ -299,6 +406,9 @@ int Foam::foamDEM::runLiggghtsScript(int argc, char* argv[])
             hasScreen = true;
         }
         else if ((a == "-echo" || a == "-e") && more) echo = argv[++i];
+        else if (a == "-writeBodies" && more) writeBodies = argv[++i];
+        else if (a == "-readBodies" && more) readBodies = argv[++i];
+        else if (a == "-restartOut" && more) restartOut = argv[++i];
         else if ((a == "-var" || a == "-v") && i + 2 < argc)
         {
             std::vector<std::string> v{argv[++i]};
@@ -322,6 +432,10 @@ int Foam::foamDEM::runLiggghtsScript(int argc, char* argv[])
         else bad = "unknown or incomplete argument '" + a + "'";
     }
     if (bad.empty() && scriptPath.empty()) bad = "no input script (-in)";
+    if (bad.empty() && readBodies.empty() != restartOut.empty())
+    {
+        bad = "-readBodies and -restartOut go together";
+    }
     int readable = 0;
     if (bad.empty() && rank == 0)
     {
@@ -404,6 +518,7 @@ int Foam::foamDEM::runLiggghtsScript(int argc, char* argv[])
     }
 
     lmp->input->file(scriptPath.c_str());
+    bodyStates(writeBodies, readBodies, restartOut);
 
     delete lmp;     // closes the log
     lmp = nullptr;

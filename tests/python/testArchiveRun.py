@@ -5,7 +5,8 @@ directories 0 and the latest in every processor, the solver's DEM restart
 and step file of the latest time only, the first and the newest dump, the
 two newest script restarts, the logs), and unpack gives it back; with
 --bodies, the restarts that have their bodies' states beside them are left
-out (and LIGGGHTS's own), a bodies' file older than its restart and a
+out (and LIGGGHTS's own, and older writes' bodies), a case whose Allrun
+does not rebuild restarts, a bodies' file older than its restart and a
 latest write without one are refused."""
 import os
 import subprocess
@@ -60,10 +61,17 @@ check("unpack gives the files back",
       r.returncode == 0 and all(open(os.path.join(out, f)).read() == f for f in want))
 
 # --bodies: a restart with its bodies' states beside it is carried by them
-for f in ("DEM/restart/1.5.bodies", "DEM/post/filled.restart", "DEM/post/filled.bodies",
-          "DEM/post/fill.restart"):
+for f in ("DEM/restart/1.5.bodies", "DEM/restart/1.bodies", "DEM/post/filled.restart",
+          "DEM/post/filled.bodies", "DEM/post/fill.restart"):
     open(os.path.join(case, f), "w").write(f)
 archive = os.path.join(tmp, "bodies.tar.xz")
+# (only for a case whose Allrun rebuilds restarts from them)
+r = subprocess.run([sys.executable, tool, "pack", case, archive, "--bodies"],
+                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+print(r.stdout.strip())
+check("--bodies refuses a case whose Allrun does not rebuild restarts",
+      r.returncode != 0 and "does not rebuild" in r.stdout)
+open(os.path.join(case, "Allrun"), "w").write("foamDEMLiggghts -readBodies X -restartOut Y\n")
 r = subprocess.run([sys.executable, tool, "pack", case, archive, "--bodies"],
                    stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
 print(r.stdout.strip())
@@ -74,7 +82,7 @@ want = {"DEM/restart/1.5.bodies", "DEM/restart/1.5.step", "DEM/post/filled.bodie
         "DEM/post/fill.restart", "processor0/1.5/U", "log.pisoDEMFoam"}
 check("--bodies: the bodies' states, the step, a restart without bodies and the rest",
       want <= names, str(sorted(want - names)))
-unwanted = {"DEM/restart/1.5.restart", "DEM/post/filled.restart",
+unwanted = {"DEM/restart/1.5.restart", "DEM/post/filled.restart", "DEM/restart/1.bodies",
             "DEM/post/restart/rebuild.200.restart", "DEM/post/restart/rebuild.300.restart"}
 check("--bodies: not the restarts the bodies carry, nor LIGGGHTS's own",
       not (unwanted & names), str(sorted(unwanted & names)))

@@ -35,10 +35,18 @@ for f in files:
     os.makedirs(os.path.dirname(os.path.join(case, f)), exist_ok=True)
     open(os.path.join(case, f), "w").write(f)
 
+
+
+def tool_run(*args):
+    """foamDEMArchiveRun ARGS; its output printed"""
+    r = subprocess.run([sys.executable, tool] + list(args),
+                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    print(r.stdout.strip())
+    return r
+
+
 archive = os.path.join(tmp, "run.tar.xz")
-r = subprocess.run([sys.executable, tool, "pack", case, archive],
-                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-print(r.stdout.strip())
+r = tool_run("pack", case, archive)
 check("pack exits 0", r.returncode == 0)
 with tarfile.open(archive) as tar:
     names = set(tar.getnames())
@@ -54,9 +62,7 @@ unwanted = {"processor0/1/U", "processor1/2/U", "DEM/restart/1.restart",
 check("and not the older writes, restarts and dumps", not (unwanted & names),
       str(sorted(unwanted & names)))
 out = os.path.join(tmp, "unpacked")
-r = subprocess.run([sys.executable, tool, "unpack", archive, out],
-                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-print(r.stdout.strip())
+r = tool_run("unpack", archive, out)
 check("unpack gives the files back",
       r.returncode == 0 and all(open(os.path.join(out, f)).read() == f for f in want))
 
@@ -66,15 +72,11 @@ for f in ("DEM/restart/1.5.bodies", "DEM/restart/1.bodies", "DEM/post/filled.res
     open(os.path.join(case, f), "w").write(f)
 archive = os.path.join(tmp, "bodies.tar.xz")
 # (only for a case whose Allrun rebuilds restarts from them)
-r = subprocess.run([sys.executable, tool, "pack", case, archive, "--bodies"],
-                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-print(r.stdout.strip())
+r = tool_run("pack", case, archive, "--bodies")
 check("--bodies refuses a case whose Allrun does not rebuild restarts",
       r.returncode != 0 and "does not rebuild" in r.stdout)
 open(os.path.join(case, "Allrun"), "w").write("foamDEMLiggghts -readBodies X -restartOut Y\n")
-r = subprocess.run([sys.executable, tool, "pack", case, archive, "--bodies"],
-                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-print(r.stdout.strip())
+r = tool_run("pack", case, archive, "--bodies")
 check("pack --bodies exits 0", r.returncode == 0)
 with tarfile.open(archive) as tar:
     names = set(tar.getnames())
@@ -90,18 +92,14 @@ check("--bodies: the restart kept is named", "DEM/post/fill.restart kept" in r.s
 
 # a bodies' file older than its restart (a fill that went on) is refused
 os.utime(os.path.join(case, "DEM/post/filled.bodies"), (1e9, 1e9))
-r = subprocess.run([sys.executable, tool, "pack", case, archive, "--bodies"],
-                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-print(r.stdout.strip())
+r = tool_run("pack", case, archive, "--bodies")
 check("--bodies refuses bodies older than their restart",
       r.returncode != 0 and "filled.bodies is older than" in r.stdout)
 os.utime(os.path.join(case, "DEM/post/filled.bodies"))
 
 # and a latest write without them
 os.remove(os.path.join(case, "DEM/restart/1.5.bodies"))
-r = subprocess.run([sys.executable, tool, "pack", case, archive, "--bodies"],
-                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-print(r.stdout.strip())
+r = tool_run("pack", case, archive, "--bodies")
 check("--bodies refuses a latest write without its bodies' states",
       r.returncode != 0 and "has no bodies' states" in r.stdout)
 finish()

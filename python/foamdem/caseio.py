@@ -224,3 +224,44 @@ def function_object_segments(case, name, fname):
                 paths.append((again, 1))
     paths.sort(key=lambda pa: (float(os.path.basename(os.path.dirname(pa[0]))), pa[1]))
     return [p for p, _ in paths]
+
+
+_ANY_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|[-+]?\b(?:nan|inf)\b", re.I)
+
+
+def file_numbers(path):
+    """Every number of an OpenFOAM ASCII field or cloud file after its
+    FoamFile header (comments left out), in file order, nan and inf included:
+    what a check compares between two runs' writes."""
+    with open(path) as f:
+        text = f.read()
+    if "FoamFile" in text:
+        text = text.split("}", 1)[1]
+    return [float(x) for x in _ANY_NUMBER.findall(_strip_comments(text))]
+
+
+def case_processes(case, command=None, below=False):
+    """(pid, MPI rank) of the processes whose working directory is CASE (or
+    below it, with below=True), this process left out; with COMMAND, only
+    those whose executable's name is COMMAND. The rank is 0 outside mpirun.
+    Processes are told apart by working directory, never by name alone."""
+    case = os.path.realpath(case)
+    found = []
+    for pid in os.listdir("/proc"):
+        if not pid.isdigit() or int(pid) == os.getpid():
+            continue
+        try:
+            cwd = os.path.realpath("/proc/%s/cwd" % pid)
+            if cwd != case and not (below and cwd.startswith(case + os.sep)):
+                continue
+            if command is not None:
+                with open("/proc/%s/cmdline" % pid, "rb") as f:
+                    cmd = f.read().split(b"\0")
+                if not cmd or os.path.basename(cmd[0]).decode() != command:
+                    continue
+            with open("/proc/%s/environ" % pid, "rb") as f:
+                env = dict(e.split(b"=", 1) for e in f.read().split(b"\0") if b"=" in e)
+            found.append((int(pid), int(env.get(b"OMPI_COMM_WORLD_RANK", b"0"))))
+        except (OSError, ValueError):
+            continue
+    return found

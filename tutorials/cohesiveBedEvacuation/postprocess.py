@@ -28,6 +28,7 @@ writes
        - the flow is established: the vent's volume flow equals the supply's
          within 1 % and varies by less than 10 % over the last quarter of
          the run, the vent velocity above 30 m/s;
+       - the fill inserted all the particles asked for;
        - particles crossed the vent and were deleted (at least one);
        - the account is exact at every line: present + deleted = initial;
        - the run reached its end time.

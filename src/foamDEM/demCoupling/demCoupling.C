@@ -449,11 +449,17 @@ void Foam::foamDEM::demCoupling::stopWithLastGoodState(const string& message)
                 there = from == target ? isFile(target) : mv(from, target);
                 if (from != target)
                 {
-                    mv
-                    (
-                        demEngine::restartStepFile(from),
-                        demEngine::restartStepFile(target)
-                    );
+                    // Each file beside it goes too; one the step has not
+                    // (bodies) is not left from an earlier run
+                    const List<fileName> a(engine_->restartCompanions(from));
+                    const List<fileName> b(engine_->restartCompanions(target));
+                    forAll(a, i)
+                    {
+                        if (!isFile(a[i]) || !mv(a[i], b[i]))
+                        {
+                            rm(b[i]);
+                        }
+                    }
                 }
             }
             // The other ranks wait for the move before the exit
@@ -903,7 +909,10 @@ void Foam::foamDEM::demCoupling::writeDEMRestart()
         if (Pstream::master())
         {
             rm(oldest);
-            rm(demEngine::restartStepFile(oldest));
+            for (const fileName& f : engine_->restartCompanions(oldest))
+            {
+                rm(f);
+            }
         }
     }
 }

@@ -1235,6 +1235,17 @@ void Foam::foamDEM::liggghtsEngine::copyBodyTerms(bool toRestart)
 }
 
 
+Foam::List<Foam::fileName> Foam::foamDEM::liggghtsEngine::restartCompanions
+(
+    const fileName& restart
+) const
+{
+    List<fileName> files(demEngine::restartCompanions(restart));
+    files.append(fileName(bodyStateFile(restart)));
+    return files;
+}
+
+
 void Foam::foamDEM::liggghtsEngine::writeRestart(const fileName& file)
 {
     copyHeld(true);
